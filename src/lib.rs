@@ -1,0 +1,17 @@
+//! geocert — a geometric kernel whose answers come with proofs.
+//!
+//! Operations are computed fast in f64 and certified by an interval and
+//! multiprecision layer (spec/CERTIFICATION.md). Layers, each depending only on
+//! the ones above it (ARCHITECTURE.md):
+//!
+//! * [`num`] — numbers: the generic [`num::Real`] trait, filters, intervals, MPFR, rationals;
+//! * [`geom`] — linear objects and their exact, filtered predicates and constructions;
+//! * [`certify`] — Krawczyk, subdivision, precision escalation, singular roots;
+//! * [`io`] — the JSON case format (spec/CASES.md).
+
+pub mod certificate;
+pub mod error;
+pub mod num;
+
+pub use certificate::{Arithmetic, Certified, Status};
+pub use error::GeomError;

@@ -1,0 +1,136 @@
+//! The one numeric trait that f64, the f64 interval and the MPFR interval implement
+//! (ARCHITECTURE.md "Numbers"), so that a formula — a curve's point, a Jacobian — is
+//! written once and evaluated in any of them.
+//!
+//! Contract for implementors that are enclosures (intervals): every operation returns
+//! a set that contains the exact result of the operation applied to every point of the
+//! operands. For `f64` the operations are the ordinary (rounded) ones and prove nothing.
+//!
+//! Constants enter a formula through [`Real::lift`], which produces the exact value in
+//! the number system (and precision) of an existing number, so MPFR intervals keep
+//! their precision through a generic formula without a global context.
+
+use std::fmt::Debug;
+use std::ops::{Add, Div, Mul, Neg, Sub};
+
+/// A number type a formula can be evaluated in: `f64`, [`crate::num::Interval`] or
+/// [`crate::num::MpfrInterval`].
+pub trait Real:
+    Clone
+    + Debug
+    + PartialEq
+    + 'static
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+{
+    /// The exact value `v` in the same number system and precision as `self`.
+    fn lift(&self, v: f64) -> Self;
+    /// π (an enclosure of it for interval types).
+    fn pi_like(&self) -> Self;
+    /// `self²` (tighter than `self * self` for intervals that contain 0).
+    fn sqr(&self) -> Self;
+    /// `√self`; for intervals, the part of the operand below 0 is ignored
+    /// (an operand entirely below 0 gives an empty or NaN result).
+    fn sqrt(&self) -> Self;
+    /// `self^n` for an integer `n` (n < 0 divides).
+    fn powi(&self, n: i32) -> Self;
+    fn sin(&self) -> Self;
+    fn cos(&self) -> Self;
+    fn tan(&self) -> Self;
+    fn exp(&self) -> Self;
+    /// Natural logarithm.
+    fn ln(&self) -> Self;
+    fn sinh(&self) -> Self;
+    fn cosh(&self) -> Self;
+    /// `atan2(self, x)`: the angle of the point `(x, self)`, in `(-π, π]`.
+    fn atan2(&self, x: &Self) -> Self;
+    /// A representative double (the value for f64, a midpoint for intervals).
+    fn mid(&self) -> f64;
+    /// Lower and upper f64 bounds of the value (rounded outward for MPFR intervals;
+    /// `(x, x)` for f64).
+    fn bounds(&self) -> (f64, f64);
+
+    /// 0 in the number system of `self`.
+    fn zero_like(&self) -> Self {
+        self.lift(0.0)
+    }
+    /// 1 in the number system of `self`.
+    fn one_like(&self) -> Self {
+        self.lift(1.0)
+    }
+}
+
+impl Real for f64 {
+    fn lift(&self, v: f64) -> Self {
+        v
+    }
+    fn pi_like(&self) -> Self {
+        std::f64::consts::PI
+    }
+    fn sqr(&self) -> Self {
+        self * self
+    }
+    fn sqrt(&self) -> Self {
+        f64::sqrt(*self)
+    }
+    fn powi(&self, n: i32) -> Self {
+        f64::powi(*self, n)
+    }
+    fn sin(&self) -> Self {
+        f64::sin(*self)
+    }
+    fn cos(&self) -> Self {
+        f64::cos(*self)
+    }
+    fn tan(&self) -> Self {
+        f64::tan(*self)
+    }
+    fn exp(&self) -> Self {
+        f64::exp(*self)
+    }
+    fn ln(&self) -> Self {
+        f64::ln(*self)
+    }
+    fn sinh(&self) -> Self {
+        f64::sinh(*self)
+    }
+    fn cosh(&self) -> Self {
+        f64::cosh(*self)
+    }
+    fn atan2(&self, x: &Self) -> Self {
+        f64::atan2(*self, *x)
+    }
+    fn mid(&self) -> f64 {
+        *self
+    }
+    fn bounds(&self) -> (f64, f64) {
+        (*self, *self)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A generic formula, written once: the point of a circle of radius r at angle t.
+    fn circle_point<T: Real>(r: f64, t: &T) -> (T, T) {
+        let rr = t.lift(r);
+        (rr.clone() * t.cos(), rr * t.sin())
+    }
+
+    #[test]
+    fn f64_evaluates_generic_formulas() {
+        let (x, y) = circle_point(2.0, &0.0f64);
+        assert_eq!((x, y), (2.0, 0.0));
+        assert_eq!(3.0f64.lift(0.5), 0.5);
+        assert_eq!(Real::sqr(&-3.0f64), 9.0);
+        assert_eq!(Real::bounds(&1.5f64), (1.5, 1.5));
+    }
+}
