@@ -11,6 +11,7 @@
 
 pub mod certificate;
 pub mod error;
+pub mod io;
 pub mod num;
 
 pub use certificate::{Arithmetic, Certified, Status};

@@ -1,3 +1,39 @@
-fn main() {
-    println!("geocert");
+//! The `geocert` command line: `solve`, `demo` (and, as later issues land, `verify`,
+//! `bench`, `render`).
+
+mod cli;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+#[derive(Parser)]
+#[command(
+    name = "geocert",
+    version,
+    about = "Geometric operations with certified answers"
+)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Solve the cases of FILE (a JSON array or JSON Lines; `-` is standard input) and
+    /// write one result per case as JSON Lines (spec/CASES.md).
+    Solve {
+        /// The case file, or `-` for standard input.
+        file: String,
+    },
+    /// Solve the worked examples of OPERATIONS.md §16 and a few degenerate cases, and
+    /// print a table of status, kind, point and time.
+    Demo,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    match cli.command {
+        Command::Solve { file } => cli::solve::run(&file),
+        Command::Demo => cli::demo::run(),
+    }
 }

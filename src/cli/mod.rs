@@ -1,0 +1,4 @@
+//! Sub-commands of the binary.
+
+pub mod demo;
+pub mod solve;

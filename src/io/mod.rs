@@ -1,0 +1,11 @@
+//! The JSON case format of the command line (spec/CASES.md): reading cases, turning
+//! them into geometric objects, and writing results as JSON Lines.
+
+pub mod case;
+pub mod number;
+pub mod objects;
+pub mod result;
+
+pub use case::{read_cases, Case, Op, Options, ReadCase};
+pub use number::{Double, Num};
+pub use objects::ObjectSpec;

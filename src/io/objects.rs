@@ -1,0 +1,123 @@
+//! Objects of the case format (spec/CASES.md "Objects"), as written. Validation into
+//! geometric objects (zero directions, collinear plane vectors, ...) happens when a
+//! case is solved, with the field path prefixed by the object's position.
+
+use super::case::deserialize_at;
+use super::number::Num;
+use crate::error::GeomError;
+use serde::Deserialize;
+
+/// `line`: `c(t) = origin + t·dir`, t ∈ ℝ or `range` (alias `domain`).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct LineSpec {
+    pub origin: [Num; 3],
+    pub dir: [Num; 3],
+    #[serde(alias = "domain")]
+    pub range: Option<[Num; 2]>,
+}
+
+/// `segment`: `c(t) = (1−t)·a + t·b`, t ∈ [0, 1].
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SegmentSpec {
+    pub a: [Num; 3],
+    pub b: [Num; 3],
+}
+
+/// `plane`: parametric `origin + u·u + v·v`, or implicit `normal·x + d = 0`
+/// (exactly one of the two field sets).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PlaneSpec {
+    pub origin: Option<[Num; 3]>,
+    pub u: Option<[Num; 3]>,
+    pub v: Option<[Num; 3]>,
+    pub normal: Option<[Num; 3]>,
+    pub d: Option<Num>,
+}
+
+/// `line2`: `origin + t·dir` in the plane.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Line2Spec {
+    pub origin: [Num; 2],
+    pub dir: [Num; 2],
+    #[serde(alias = "domain")]
+    pub range: Option<[Num; 2]>,
+}
+
+/// `segment2`: `(1−t)·a + t·b` in the plane.
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Segment2Spec {
+    pub a: [Num; 2],
+    pub b: [Num; 2],
+}
+
+/// One object of a case, by its `type`.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ObjectSpec {
+    Line(LineSpec),
+    Segment(SegmentSpec),
+    Plane(PlaneSpec),
+    Line2(Line2Spec),
+    Segment2(Segment2Spec),
+}
+
+/// The object types this build understands, as written in `type`.
+pub const OBJECT_TYPES: &[&str] = &["line", "segment", "plane", "line2", "segment2"];
+
+impl ObjectSpec {
+    /// The `type` name as written in JSON.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            ObjectSpec::Line(_) => "line",
+            ObjectSpec::Segment(_) => "segment",
+            ObjectSpec::Plane(_) => "plane",
+            ObjectSpec::Line2(_) => "line2",
+            ObjectSpec::Segment2(_) => "segment2",
+        }
+    }
+}
+
+/// Read one object from its JSON value, naming errors below `prefix`
+/// (`objects[1].dir[2]`). The `type` field selects the fields that are allowed.
+pub fn parse_object(mut value: serde_json::Value, prefix: &str) -> Result<ObjectSpec, GeomError> {
+    let type_field = format!("{prefix}.type");
+    let Some(map) = value.as_object_mut() else {
+        return Err(GeomError::Format {
+            field: prefix.to_string(),
+            message: "expected an object with a \"type\" field".into(),
+        });
+    };
+    let type_name = match map.remove("type") {
+        Some(serde_json::Value::String(s)) => s,
+        Some(_) => {
+            return Err(GeomError::Format {
+                field: type_field,
+                message: "expected a string".into(),
+            })
+        }
+        None => {
+            return Err(GeomError::Format {
+                field: type_field,
+                message: "missing field `type`".into(),
+            })
+        }
+    };
+    match type_name.as_str() {
+        "line" => deserialize_at(value, prefix).map(ObjectSpec::Line),
+        "segment" => deserialize_at(value, prefix).map(ObjectSpec::Segment),
+        "plane" => deserialize_at(value, prefix).map(ObjectSpec::Plane),
+        "line2" => deserialize_at(value, prefix).map(ObjectSpec::Line2),
+        "segment2" => deserialize_at(value, prefix).map(ObjectSpec::Segment2),
+        other => Err(GeomError::Unsupported {
+            field: type_field,
+            reason: format!(
+                "unknown object type {other:?}; this build knows {}",
+                OBJECT_TYPES.join(", ")
+            ),
+        }),
+    }
+}

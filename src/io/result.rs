@@ -1,0 +1,178 @@
+//! Results of the case format (spec/CASES.md "Results"), written as JSON Lines.
+//!
+//! Doubles are printed in the shortest form that reads back to the same bits
+//! (serde_json uses ryu). A value that has no finite double (an exact coordinate
+//! beyond the f64 range) is written `null`, with its exact rational in `exact`.
+
+use crate::certificate::Certified;
+use crate::error::GeomError;
+use serde::Serialize;
+use serde_json::Value;
+
+/// An enclosure `[lo, hi]` of one coordinate.
+pub type Bounds = [f64; 2];
+
+/// Exact rationals of a point, as `"p/q"` strings (on request: `options.exact`).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct ExactOut {
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub xyz: Vec<String>,
+    /// One array per input object; empty for objects without parameters.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub params: Vec<Vec<String>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance_squared: Option<String>,
+}
+
+/// One reported point (`points[]`).
+#[derive(Debug, Clone, Default, PartialEq, Serialize)]
+pub struct PointOut {
+    pub xyz: Vec<f64>,
+    /// One array per input object, in input order (empty for objects without
+    /// parameters, such as implicit planes).
+    pub params: Vec<Vec<f64>>,
+    #[serde(rename = "box")]
+    pub bounds: Vec<Bounds>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub param_box: Option<Vec<Vec<Bounds>>>,
+    pub multiplicity: u32,
+    pub tangent: bool,
+    /// Projections: the distance from the query point (correctly rounded).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance: Option<f64>,
+    /// Projections onto planes: the signed distance along the normal (u × v or n).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub signed_distance: Option<f64>,
+    /// Projections: `true` for the nearest of the reported points.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub nearest: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<ExactOut>,
+}
+
+/// A line in the parameter plane of a parametric plane: `origin + t·dir` (§8 eq. (8.4)).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ParamLineOut {
+    pub origin: Vec<f64>,
+    pub dir: Vec<f64>,
+}
+
+/// `line` of a result: a point and a direction (exact where the inputs are linear).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct LineOut {
+    pub point: Vec<f64>,
+    pub dir: Vec<f64>,
+    /// The line in the parameters of each input object, in input order (§8 eq. (8.4));
+    /// `null` for objects without parameters.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub params: Vec<Option<ParamLineOut>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<ExactLineOut>,
+}
+
+/// Exact rationals of a line.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExactLineOut {
+    pub point: Vec<String>,
+    pub dir: Vec<String>,
+}
+
+/// `segment` of a result (the overlap of collinear segments).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SegmentOut {
+    pub a: PointOut,
+    pub b: PointOut,
+}
+
+/// `error` of a result.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ErrorOut {
+    pub kind: &'static str,
+    pub field: String,
+    pub message: String,
+}
+
+/// One line of output.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CaseResult {
+    pub id: Value,
+    pub status: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kind: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub complete: Option<bool>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub bits: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arithmetic: Option<&'static str>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub micros: Option<u64>,
+    /// Why the answer is empty or undecided (`parallel`, `extensions_meet`, ...).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub perturbation: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub points: Option<Vec<PointOut>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub line: Option<LineOut>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub segment: Option<SegmentOut>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error: Option<ErrorOut>,
+}
+
+impl CaseResult {
+    /// A result for a case that could not be read or solved.
+    pub fn error(id: Value, error: &GeomError) -> Self {
+        CaseResult {
+            id,
+            status: "error",
+            kind: None,
+            complete: None,
+            bits: None,
+            arithmetic: None,
+            micros: None,
+            reason: None,
+            perturbation: None,
+            points: None,
+            line: None,
+            segment: None,
+            error: Some(ErrorOut {
+                kind: error.kind(),
+                field: error.field().to_string(),
+                message: error.to_string(),
+            }),
+        }
+    }
+
+    /// A result of the given kind carrying the certificate of `certified`.
+    pub fn certified<T>(id: Value, kind: &'static str, certified: &Certified<T>) -> Self {
+        CaseResult {
+            id,
+            status: certified.status.as_str(),
+            kind: Some(kind),
+            complete: Some(certified.complete),
+            bits: Some(certified.bits),
+            arithmetic: Some(certified.arithmetic.as_str()),
+            micros: None,
+            reason: certified.reason.clone(),
+            perturbation: certified.perturbation,
+            points: None,
+            line: None,
+            segment: None,
+            error: None,
+        }
+    }
+
+    /// The result as one JSON line.
+    pub fn to_json_line(&self) -> String {
+        // Serialising these plain structs cannot fail; keep a readable fallback anyway.
+        serde_json::to_string(self).unwrap_or_else(|e| {
+            format!(
+                "{{\"status\":\"error\",\"error\":{{\"kind\":\"internal\",\"message\":{:?}}}}}",
+                e.to_string()
+            )
+        })
+    }
+}
