@@ -94,7 +94,7 @@ pub fn kind<T, const D: usize>(r: &Intersection<T, D>) -> &'static str {
     }
 }
 
-/// A deterministic xorshift64* stream of doubles with full 53-bit mantissas.
+/// A deterministic xorshift64* stream of test doubles.
 pub struct Rng(u64);
 
 impl Rng {
@@ -107,7 +107,7 @@ impl Rng {
         self.0 ^= self.0 >> 27;
         self.0.wrapping_mul(0x2545_f491_4f6c_dd1d)
     }
-    /// Uniform in [−1, 1).
+    /// Uniform in [−1, 1), a multiple of 2⁻⁵² (so sums of two are exact).
     pub fn unit(&mut self) -> f64 {
         (self.next_u64() >> 11) as f64 / (1u64 << 52) as f64 - 1.0
     }
