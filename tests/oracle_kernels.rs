@@ -153,8 +153,8 @@ fn two_dimensional_lines_meet_exactly_on_both() {
     let mut rng = Rng::new(17);
     let on = |x: &[Rational; 2], l: &Line2Input| {
         let (dx, dy) = (
-            Rational::from(&x[0] - q(l.point[0])),
-            Rational::from(&x[1] - q(l.point[1])),
+            &x[0] - q(l.point[0]),
+            &x[1] - q(l.point[1]),
         );
         dx * q(l.direction[1]) == dy * q(l.direction[0])
     };
