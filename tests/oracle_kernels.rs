@@ -152,10 +152,7 @@ fn line_plane_and_projections_satisfy_their_equations_exactly() {
 fn two_dimensional_lines_meet_exactly_on_both() {
     let mut rng = Rng::new(17);
     let on = |x: &[Rational; 2], l: &Line2Input| {
-        let (dx, dy) = (
-            &x[0] - q(l.point[0]),
-            &x[1] - q(l.point[1]),
-        );
+        let (dx, dy) = (&x[0] - q(l.point[0]), &x[1] - q(l.point[1]));
         dx * q(l.direction[1]) == dy * q(l.direction[0])
     };
     for _ in 0..200 {

@@ -29,11 +29,23 @@ impl EpeckToDouble {
 
 // ---- inputs ---------------------------------------------------------------
 
-/// Every component of `field.part` finite, naming `field.part[i]` otherwise.
+/// Every component of `field.part` finite, naming `field.part[i]` otherwise. The
+/// names are built only on failure: `require_finite_all` formats one per component,
+/// which costs more than a whole Epick call.
+#[inline(always)]
 fn finite(field: &str, part: &str, v: &[f64]) -> Result<(), GeomError> {
-    require_finite_all(&format!("{field}.{part}"), v)
+    if v.iter().all(|x| x.is_finite()) {
+        return Ok(());
+    }
+    let field = if part.is_empty() {
+        field.to_string()
+    } else {
+        format!("{field}.{part}")
+    };
+    require_finite_all(&field, v)
 }
 
+#[inline(always)]
 pub(super) fn plane(p: &PlaneInput, field: &str) -> Result<PlaneIn, GeomError> {
     match *p {
         PlaneInput::Parametric { origin, u, v } => {
@@ -50,8 +62,10 @@ pub(super) fn plane(p: &PlaneInput, field: &str) -> Result<PlaneIn, GeomError> {
             })
         }
         PlaneInput::Implicit { a, b, c, d } => {
-            for (name, x) in [("a", a), ("b", b), ("c", c), ("d", d)] {
-                require_finite(&format!("{field}.{name}"), x)?;
+            if ![a, b, c, d].iter().all(|x| x.is_finite()) {
+                for (name, x) in [("a", a), ("b", b), ("c", c), ("d", d)] {
+                    require_finite(&format!("{field}.{name}"), x)?;
+                }
             }
             Ok(PlaneIn {
                 implicit: true,
@@ -61,11 +75,13 @@ pub(super) fn plane(p: &PlaneInput, field: &str) -> Result<PlaneIn, GeomError> {
     }
 }
 
+#[inline(always)]
 pub(super) fn point(p: &[f64; 3], field: &str) -> Result<[f64; 3], GeomError> {
-    require_finite_all(field, p)?;
+    finite(field, "", p)?;
     Ok(*p)
 }
 
+#[inline(always)]
 pub(super) fn line(l: &LineInput, field: &str) -> Result<Two3, GeomError> {
     finite(field, "point", &l.point)?;
     finite(field, "direction", &l.direction)?;
@@ -75,6 +91,7 @@ pub(super) fn line(l: &LineInput, field: &str) -> Result<Two3, GeomError> {
     })
 }
 
+#[inline(always)]
 pub(super) fn segment(s: &SegmentInput, field: &str) -> Result<Two3, GeomError> {
     finite(field, "source", &s.source)?;
     finite(field, "target", &s.target)?;
@@ -84,6 +101,7 @@ pub(super) fn segment(s: &SegmentInput, field: &str) -> Result<Two3, GeomError> 
     })
 }
 
+#[inline(always)]
 pub(super) fn line2(l: &Line2Input, field: &str) -> Result<Two2, GeomError> {
     finite(field, "point", &l.point)?;
     finite(field, "direction", &l.direction)?;
@@ -93,6 +111,7 @@ pub(super) fn line2(l: &Line2Input, field: &str) -> Result<Two2, GeomError> {
     })
 }
 
+#[inline(always)]
 pub(super) fn segment2(s: &Segment2Input, field: &str) -> Result<Two2, GeomError> {
     finite(field, "source", &s.source)?;
     finite(field, "target", &s.target)?;
@@ -191,13 +210,34 @@ pub(super) fn exact<const D: usize>(
     assemble(out.kind, values)
 }
 
-/// Reads a double answer.
+/// Reads a double answer, without allocating (the benchmarks time this path).
+#[inline(always)]
 pub(super) fn float<const D: usize>(
     out: Result<FloatOut, cxx::Exception>,
 ) -> Result<Intersection<f64, D>, OracleError> {
     let out = out.map_err(exception)?;
-    let n = value_count(out.kind, D)?;
-    assemble(out.kind, out.v[..n].to_vec())
+    // D is 2 or 3, so every index is below 2·D ≤ 6 = out.v.len().
+    let at = |k: usize| -> [f64; D] {
+        let mut a = [0.0; D];
+        a.copy_from_slice(&out.v[k..k + D]);
+        a
+    };
+    Ok(match out.kind {
+        Kind::Empty => Intersection::Empty,
+        Kind::Point => Intersection::Point(at(0)),
+        Kind::Line => Intersection::Line {
+            point: at(0),
+            direction: at(D),
+        },
+        Kind::Segment => Intersection::Segment {
+            source: at(0),
+            target: at(D),
+        },
+        kind => {
+            value_count(kind, D)?;
+            Intersection::Plane([out.v[0], out.v[1], out.v[2], out.v[3]])
+        }
+    })
 }
 
 /// The point of a projection (always a point, or an error).
