@@ -13,6 +13,8 @@ pub mod certificate;
 pub mod error;
 pub mod io;
 pub mod num;
+#[cfg(feature = "cgal")]
+pub mod oracle;
 
 pub use certificate::{Arithmetic, Certified, Status};
 pub use error::GeomError;

@@ -1,0 +1,89 @@
+//! CGAL's `Exact_predicates_inexact_constructions_kernel`, in doubles: the fast
+//! kernel a CGAL user would otherwise pick. Predicates are exact on the doubles they
+//! see, but constructions round (the cross product of a parametric plane, its `d`,
+//! the plane–plane line), so the kind can be wrong on degenerate input, e.g. three
+//! exactly dependent planes (tests/oracle_smoke.rs). Kinds: see [`super::Intersection`].
+
+use super::convert::{self, only_point};
+use super::ffi::bridge;
+use super::{
+    FloatResult, FloatResult2, Line2Input, LineInput, OracleError, PlaneInput, Segment2Input,
+    SegmentInput,
+};
+
+/// Line ∩ plane (OPERATIONS.md §5.1): `Empty`, `Point` or `Line`.
+pub fn intersect_line_plane(
+    line: &LineInput,
+    plane: &PlaneInput,
+) -> Result<FloatResult, OracleError> {
+    let (l, p) = (
+        convert::line(line, "line")?,
+        convert::plane(plane, "plane")?,
+    );
+    convert::float(bridge::epick_line_plane(&l, &p))
+}
+
+/// Segment ∩ plane: `Empty`, `Point` or `Segment`.
+pub fn intersect_segment_plane(
+    segment: &SegmentInput,
+    plane: &PlaneInput,
+) -> Result<FloatResult, OracleError> {
+    let (s, p) = (
+        convert::segment(segment, "segment")?,
+        convert::plane(plane, "plane")?,
+    );
+    convert::float(bridge::epick_segment_plane(&s, &p))
+}
+
+/// Plane ∩ plane (OPERATIONS.md §8): `Empty`, `Line` or `Plane`.
+pub fn intersect_plane_plane(a: &PlaneInput, b: &PlaneInput) -> Result<FloatResult, OracleError> {
+    let (a, b) = (convert::plane(a, "a")?, convert::plane(b, "b")?);
+    convert::float(bridge::epick_plane_plane(&a, &b))
+}
+
+/// Three planes (OPERATIONS.md §7.1): `Empty`, `Point`, `Line` or `Plane`.
+pub fn intersect_three_planes(
+    a: &PlaneInput,
+    b: &PlaneInput,
+    c: &PlaneInput,
+) -> Result<FloatResult, OracleError> {
+    let (a, b, c) = (
+        convert::plane(a, "a")?,
+        convert::plane(b, "b")?,
+        convert::plane(c, "c")?,
+    );
+    convert::float(bridge::epick_three_planes(&a, &b, &c))
+}
+
+/// The orthogonal projection of `point` onto `line` (OPERATIONS.md §3.1).
+pub fn project_point_line(point: &[f64; 3], line: &LineInput) -> Result<[f64; 3], OracleError> {
+    let (q, l) = (
+        convert::point(point, "point")?,
+        convert::line(line, "line")?,
+    );
+    only_point(convert::float(bridge::epick_project_point_line(&q, &l)))
+}
+
+/// The orthogonal projection of `point` onto `plane` (OPERATIONS.md §3.3).
+pub fn project_point_plane(point: &[f64; 3], plane: &PlaneInput) -> Result<[f64; 3], OracleError> {
+    let (q, p) = (
+        convert::point(point, "point")?,
+        convert::plane(plane, "plane")?,
+    );
+    only_point(convert::float(bridge::epick_project_point_plane(&q, &p)))
+}
+
+/// 2D line ∩ line (OPERATIONS.md §6.1): `Empty`, `Point` or `Line`.
+pub fn intersect_lines_2d(a: &Line2Input, b: &Line2Input) -> Result<FloatResult2, OracleError> {
+    let (a, b) = (convert::line2(a, "a")?, convert::line2(b, "b")?);
+    convert::float(bridge::epick_lines_2d(&a, &b))
+}
+
+/// 2D segment ∩ segment (OPERATIONS.md §6.2): `Empty`, `Point` or `Segment`.
+pub fn intersect_segments_2d(
+    a: &Segment2Input,
+    b: &Segment2Input,
+) -> Result<FloatResult2, OracleError> {
+    let (a, b) = (convert::segment2(a, "a")?, convert::segment2(b, "b")?);
+    convert::float(bridge::epick_segments_2d(&a, &b))
+}
