@@ -17,7 +17,7 @@ pub trait IntervalLike: Real {
     /// `[lo, hi]` in the number system and precision of `self`, rounded outward if the
     /// bounds are not representable. Precondition `lo ≤ hi` (a violation gives the whole
     /// line, never a wrong enclosure).
-    fn from_bounds_like(&self, lo: f64, hi: f64) -> Self;
+    fn with_bounds(&self, lo: f64, hi: f64) -> Self;
     /// The empty set, in the precision of `self`.
     fn empty_like(&self) -> Self;
     /// The whole line, in the precision of `self`.
@@ -46,6 +46,8 @@ pub trait IntervalLike: Real {
     fn is_subset(&self, other: &Self) -> bool;
     /// `self ⊆ interior(other)` (for a bounded `other`: strictly inside on both sides).
     fn is_interior_subset(&self, other: &Self) -> bool;
+    /// `|self|` (tightest).
+    fn abs(&self) -> Self;
     /// The convex hull of the union.
     fn hull(&self, other: &Self) -> Self;
     /// The intersection (possibly empty).

@@ -56,7 +56,7 @@ impl Real for Interval {
 }
 
 impl IntervalLike for Interval {
-    fn from_bounds_like(&self, lo: f64, hi: f64) -> Self {
+    fn with_bounds(&self, lo: f64, hi: f64) -> Self {
         Interval::from_bounds(lo, hi)
     }
     fn empty_like(&self) -> Self {
@@ -101,6 +101,9 @@ impl IntervalLike for Interval {
     }
     fn is_interior_subset(&self, other: &Self) -> bool {
         Interval::is_interior_subset(self, other)
+    }
+    fn abs(&self) -> Self {
+        Interval::abs(self)
     }
     fn hull(&self, other: &Self) -> Self {
         Interval::hull(self, other)

@@ -151,7 +151,10 @@ impl MpfrInterval {
     pub fn from_float_bounds(lo: &Float, hi: &Float, prec: u32) -> MpfrInterval {
         let p = clamp_prec(prec);
         if lo.is_nan() || hi.is_nan() || lo > hi {
-            debug_assert!(!(lo > hi), "MpfrInterval::from_float_bounds({lo}, {hi})");
+            debug_assert!(
+                lo.is_nan() || hi.is_nan(),
+                "MpfrInterval::from_float_bounds({lo}, {hi})"
+            );
             return MpfrInterval::entire(p);
         }
         MpfrInterval {

@@ -70,7 +70,7 @@ impl Real for MpfrInterval {
 }
 
 impl IntervalLike for MpfrInterval {
-    fn from_bounds_like(&self, lo: f64, hi: f64) -> Self {
+    fn with_bounds(&self, lo: f64, hi: f64) -> Self {
         MpfrInterval::from_bounds(lo, hi, self.prec())
     }
     fn empty_like(&self) -> Self {
@@ -111,6 +111,9 @@ impl IntervalLike for MpfrInterval {
     }
     fn is_interior_subset(&self, other: &Self) -> bool {
         MpfrInterval::is_interior_subset(self, other)
+    }
+    fn abs(&self) -> Self {
+        MpfrInterval::abs(self)
     }
     fn hull(&self, other: &Self) -> Self {
         MpfrInterval::hull(self, other)
