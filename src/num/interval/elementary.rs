@@ -20,7 +20,7 @@ use super::cases::{
 };
 use super::mpfr_eval::{atan2_f64, eval_f64, HALF_PI_DOWN, HALF_PI_UP, PI_DOWN, PI_UP};
 use super::taylor::{
-    cos_point, exp_point, reduce_half_pi, sin_point, tan_point, EXP_FAST_MAX, TRIG_FAST_MAX,
+    exp_point, reduce_half_pi, sin_cos_reduced, tan_reduced, EXP_FAST_MAX, TRIG_FAST_MAX,
 };
 use super::Interval;
 use crate::num::mpfr_interval::reduce_half_pi_mpfr;
@@ -30,71 +30,61 @@ type MpfrFn = fn(&mut Float, Round) -> Ordering;
 
 /// The position of an endpoint relative to the multiples of π/2: `x = kπ/2 + r`.
 struct Reduced {
-    /// `k` (fast path) — `None` when `k` came from MPFR and does not fit.
-    k: Option<i64>,
+    /// Fast path: `k`, `r` and `ε_r ≥ |r − r_true|` ([`super::taylor::reduce_half_pi`]).
+    fast: Option<(i64, f64, f64)>,
+    /// `k` for the span computation when it came from MPFR (may exceed `i64`).
+    k_big: Option<rug::Integer>,
     k_mod4: u32,
-    /// An enclosure of `r` (fast path only).
-    r: Option<Interval>,
     r_may_be_le0: bool,
     r_may_be_ge0: bool,
-    /// `k` as an MPFR-sized integer (slow path), for the span.
-    k_big: Option<rug::Integer>,
 }
 
 fn reduce(x: f64) -> Reduced {
     if x.abs() <= TRIG_FAST_MAX {
-        let (k, r) = reduce_half_pi(x);
-        Reduced {
-            k: Some(k),
-            k_mod4: k.rem_euclid(4) as u32,
-            r_may_be_le0: r.lo() <= 0.0,
-            r_may_be_ge0: r.hi() >= 0.0,
-            r: Some(r),
-            k_big: None,
-        }
-    } else {
-        let red = reduce_half_pi_mpfr(&Float::with_val(53, x));
-        Reduced {
-            k: None,
-            k_mod4: red.k_mod4,
-            r: None,
-            r_may_be_le0: red.r_may_be_le0,
-            r_may_be_ge0: red.r_may_be_ge0,
-            k_big: Some(red.k),
+        let (k, r, er) = reduce_half_pi(x);
+        if r.abs() <= 0.8 {
+            return Reduced {
+                fast: Some((k, r, er)),
+                k_big: None,
+                k_mod4: k.rem_euclid(4) as u32,
+                r_may_be_le0: r <= er,
+                r_may_be_ge0: r >= -er,
+            };
         }
     }
-}
-
-/// `k_b − k_a`, saturated to `u64`.
-fn span(a: &Reduced, b: &Reduced) -> u64 {
-    match (a.k, b.k) {
-        (Some(ka), Some(kb)) => (kb - ka).max(0) as u64,
-        _ => {
-            let ka = a
-                .k_big
-                .clone()
-                .unwrap_or_else(|| rug::Integer::from(a.k.unwrap_or(0)));
-            let kb = b
-                .k_big
-                .clone()
-                .unwrap_or_else(|| rug::Integer::from(b.k.unwrap_or(0)));
-            let d = kb - ka;
-            d.to_u64().unwrap_or(if d < 0 { 0 } else { u64::MAX })
-        }
+    let red = reduce_half_pi_mpfr(&Float::with_val(53, x));
+    Reduced {
+        fast: None,
+        k_big: Some(red.k),
+        k_mod4: red.k_mod4,
+        r_may_be_le0: red.r_may_be_le0,
+        r_may_be_ge0: red.r_may_be_ge0,
     }
 }
 
 /// The multiples-of-π/2 mask for `[a, b]`.
 fn mask(ra: &Reduced, rb: &Reduced) -> u8 {
-    half_pi_multiples(ra.k_mod4, span(ra, rb), ra.r_may_be_le0, rb.r_may_be_ge0)
+    let span = match (ra.fast, rb.fast) {
+        (Some((ka, _, _)), Some((kb, _, _))) => (kb - ka).max(0) as u64,
+        _ => {
+            let big = |r: &Reduced| match (&r.k_big, r.fast) {
+                (Some(k), _) => k.clone(),
+                (None, Some((k, _, _))) => rug::Integer::from(k),
+                (None, None) => rug::Integer::new(),
+            };
+            let d = big(rb) - big(ra);
+            d.to_u64().unwrap_or(if d < 0 { 0 } else { u64::MAX })
+        }
+    };
+    half_pi_multiples(ra.k_mod4, span, ra.r_may_be_le0, rb.r_may_be_ge0)
 }
 
-/// An enclosure of `f(x)` at one endpoint: the Taylor path when `red` carries one,
-/// else MPFR in both directions.
-fn endpoint(x: f64, red: &Reduced, fast: fn(i64, &Interval) -> Interval, slow: MpfrFn) -> Interval {
-    match (red.k, &red.r) {
-        (Some(k), Some(r)) => fast(k, r),
-        _ => Interval::from_bounds(eval_f64(x, Round::Down, slow), eval_f64(x, Round::Up, slow)),
+/// An enclosure of sin (`cosine = false`) or cos at one endpoint: the Taylor path when
+/// `red` has one, else MPFR in both directions.
+fn endpoint(x: f64, red: &Reduced, cosine: bool, slow: MpfrFn) -> Interval {
+    match red.fast {
+        Some((k, r, er)) => sin_cos_reduced(k, r, er, cosine),
+        None => Interval::from_bounds(eval_f64(x, Round::Down, slow), eval_f64(x, Round::Up, slow)),
     }
 }
 
@@ -115,13 +105,7 @@ impl Interval {
     /// Shared body of sin and cos: the bounds are ±1 where the argument may contain an
     /// extremum (`max_bit`/`min_bit` of the multiples mask), else the hull of the
     /// endpoint enclosures.
-    fn sin_or_cos(
-        &self,
-        max_bit: u8,
-        min_bit: u8,
-        fast: fn(i64, &Interval) -> Interval,
-        slow: MpfrFn,
-    ) -> Interval {
+    fn sin_or_cos(&self, max_bit: u8, min_bit: u8, cosine: bool, slow: MpfrFn) -> Interval {
         if self.is_empty() {
             return Interval::EMPTY;
         }
@@ -134,11 +118,11 @@ impl Interval {
         if m & max_bit != 0 && m & min_bit != 0 {
             return Interval::from_neg_lo_hi(1.0, 1.0);
         }
-        let ea = endpoint(a, &ra, fast, slow);
+        let ea = endpoint(a, &ra, cosine, slow);
         let eb = if a == b {
             ea
         } else {
-            endpoint(b, &rb, fast, slow)
+            endpoint(b, &rb, cosine, slow)
         };
         let hull = ea.hull(&eb);
         let neg_lo = if m & min_bit != 0 { 1.0 } else { hull.neg_lo() };
@@ -152,12 +136,12 @@ impl Interval {
     /// (a few ulps wide), MPFR otherwise (tightest). Unbounded or width ≥ 7 > 2π:
     /// `[−1, 1]`.
     pub fn sin(&self) -> Interval {
-        self.sin_or_cos(SIN_MAX, SIN_MIN, sin_point, sin_mpfr)
+        self.sin_or_cos(SIN_MAX, SIN_MIN, false, sin_mpfr)
     }
 
     /// `cos`: extrema +1 at `2jπ`, −1 at `π + 2jπ`; otherwise as [`Interval::sin`].
     pub fn cos(&self) -> Interval {
-        self.sin_or_cos(COS_MAX, COS_MIN, cos_point, cos_mpfr)
+        self.sin_or_cos(COS_MAX, COS_MIN, true, cos_mpfr)
     }
 
     /// `tan`: the whole line if the argument may contain a pole `π/2 + jπ` (or is
@@ -177,18 +161,14 @@ impl Interval {
             return Interval::ENTIRE;
         }
         let at = |x: f64, red: &Reduced| -> Interval {
-            match (red.k, &red.r) {
-                (Some(k), Some(r)) => tan_point(k, r).unwrap_or_else(|| {
+            red.fast
+                .and_then(|(k, r, er)| tan_reduced(k, r, er))
+                .unwrap_or_else(|| {
                     Interval::from_bounds(
                         eval_f64(x, Round::Down, tan_mpfr),
                         eval_f64(x, Round::Up, tan_mpfr),
                     )
-                }),
-                _ => Interval::from_bounds(
-                    eval_f64(x, Round::Down, tan_mpfr),
-                    eval_f64(x, Round::Up, tan_mpfr),
-                ),
-            }
+                })
         };
         let lo = at(a, &ra).lo();
         let hi = if a == b {

@@ -5,7 +5,8 @@
 use super::directed::*;
 use super::test_support::*;
 use super::*;
-use rug::Float;
+use rug::ops::Pow;
+use rug::{Float, Rational};
 
 const N: usize = 20_000;
 
@@ -325,7 +326,8 @@ fn check_taylor(
     f: fn(f64) -> Interval,
     exact_f: fn(&mut Float),
     max_ulps: u64,
-) {
+) -> u64 {
+    let mut widest = 0;
     for x in xs {
         let y = f(x);
         let mut v = Float::with_val(200, x);
@@ -343,16 +345,21 @@ fn check_taylor(
             ulps <= max_ulps || y.width() < 1e-300,
             "{name}({x:e}) = {y:?}: {ulps} ulps wide"
         );
+        if y.width() >= 1e-300 {
+            widest = widest.max(ulps);
+        }
     }
+    println!("{name}: widest enclosure {widest} ulps");
+    widest
 }
 
 fn sin_at(x: f64) -> Interval {
-    let (k, r) = taylor::reduce_half_pi(x);
-    taylor::sin_point(k, &r)
+    let (k, r, er) = taylor::reduce_half_pi(x);
+    taylor::sin_cos_reduced(k, r, er, false)
 }
 fn cos_at(x: f64) -> Interval {
-    let (k, r) = taylor::reduce_half_pi(x);
-    taylor::cos_point(k, &r)
+    let (k, r, er) = taylor::reduce_half_pi(x);
+    taylor::sin_cos_reduced(k, r, er, true)
 }
 
 #[test]
@@ -376,7 +383,7 @@ fn taylor_sin_cos_exp_enclose_200_bit_values_within_a_few_ulps() {
         |v| {
             v.sin_mut();
         },
-        16,
+        8,
     );
     check_taylor(
         "cos",
@@ -385,7 +392,7 @@ fn taylor_sin_cos_exp_enclose_200_bit_values_within_a_few_ulps() {
         |v| {
             v.cos_mut();
         },
-        16,
+        8,
     );
     let exp_args = (0..N).map(|i| {
         if i % 2 == 0 {
@@ -408,43 +415,75 @@ fn taylor_sin_cos_exp_enclose_200_bit_values_within_a_few_ulps() {
 #[test]
 fn taylor_constants_are_what_they_claim() {
     use rug::float::Constant;
+    use taylor::*;
     let half_pi = Float::with_val(400, Constant::Pi) / 2u32;
-    // P1, P2: the first two 33-bit pieces of π/2 (truncated), with few enough bits that
-    // k·P1 and k·P2 are exact for |k| < 2^19.
+    // P1, P2: the first two 33-bit pieces of π/2 (truncated), with at most 32 significant
+    // bits, so that k·P1 and k·P2 are exact for |k| < 2^19.
     let p1 = Float::with_val(400, &half_pi * (1u64 << 32)).floor() / (1u64 << 32);
-    assert_eq!(p1, f64::from_bits(0x3ff921fb54400000));
+    assert_eq!(p1, P1);
+    assert_eq!(P1.to_bits(), 0x3ff921fb54400000);
     let rest = Float::with_val(400, &half_pi - &p1);
     let p2 = Float::with_val(400, &rest * (1u128 << 66)).floor() / (1u128 << 66);
-    assert_eq!(p2, f64::from_bits(0x3dd0b4611a600000));
-    for c in [
-        f64::from_bits(0x3ff921fb54400000),
-        f64::from_bits(0x3dd0b4611a600000),
-    ] {
+    assert_eq!(p2, P2);
+    for c in [P1, P2, L1] {
         assert!(
-            c.to_bits().trailing_zeros() >= 20,
-            "at most 33 significant bits"
+            c.to_bits().trailing_zeros() >= 21,
+            "at most 32 significant bits"
         );
     }
     let p3 = Float::with_val(400, &rest - &p2);
-    let p3_lo = f64::from_bits(0x3ba3198a2e037073);
-    assert!(p3 > p3_lo && p3 < next_up(p3_lo));
+    assert_eq!(p3.to_f64(), P3, "P3 is the nearest double");
+    assert_eq!(D3, 2f64.powi(-121));
+    assert!(Float::with_val(400, &p3 - P3).abs() <= D3);
     let ln2 = Float::with_val(400, Constant::Log2);
     let l1 = Float::with_val(400, &ln2 * (1u64 << 32)).floor() / (1u64 << 32);
-    assert_eq!(l1, 0.693_147_180_369_123_8);
+    assert_eq!(l1, L1);
     let l2 = Float::with_val(400, &ln2 - &l1);
-    let l2_lo = f64::from_bits(0x3dea39ef35793c76);
-    assert!(l2 > l2_lo && l2 < next_up(l2_lo));
-    let mut fact = rug::Integer::from(1);
-    for n in 0..=20u32 {
-        if n > 0 {
-            fact *= n;
-        }
-        let inv = Rational::from((1, fact.clone()));
-        let c = taylor::inv_fact(n as usize);
-        assert!(exact(c.lo()) <= inv && inv <= exact(c.hi()), "1/{n}!");
-        assert!(c.hi() <= next_up(c.lo()));
+    assert_eq!(l2.to_f64(), L2);
+    assert_eq!(D2, 2f64.powi(-85));
+    assert!(Float::with_val(400, &l2 - L2).abs() <= D2);
+    // Coefficients: nearest doubles to ±1/n!, so within u relative.
+    let u = Rational::from((1, rug::Integer::from(1) << 53));
+    let check = |c: f64, n: u32, negative: bool| {
+        let fact = rug::Integer::from(rug::Integer::factorial(n));
+        let a = Rational::from((if negative { -1 } else { 1 }, fact));
+        assert_eq!(
+            Float::with_val(53, &a).to_f64(),
+            c,
+            "nearest double to ±1/{n}!"
+        );
+        let err = Rational::from(&exact(c) - &a).abs();
+        assert!(err <= Rational::from(&u * &a).abs(), "1/{n}!");
+    };
+    for (i, &c) in SIN_C.iter().enumerate() {
+        check(c, 2 * i as u32 + 3, i % 2 == 0);
+    }
+    for (i, &c) in COS_C.iter().enumerate() {
+        check(c, 2 * i as u32 + 2, i % 2 == 0);
+    }
+    for (i, &c) in EXP_C.iter().enumerate() {
+        check(c, i as u32 + 1, false);
     }
 }
 
-use rug::ops::Pow;
-use rug::Rational;
+#[test]
+fn trig_reduction_error_bound_holds() {
+    // |r − (x − kπ/2)| ≤ ε_r, checked at 400 bits, including the hardest doubles near
+    // multiples of π/2.
+    use rug::float::Constant;
+    let half_pi = Float::with_val(400, Constant::Pi) / 2u32;
+    let mut rng = Rng::new(8);
+    for i in 0..N {
+        let x = if i % 2 == 0 {
+            rng.range(-taylor::TRIG_FAST_MAX, taylor::TRIG_FAST_MAX)
+        } else {
+            (rng.range(-330_000.0, 330_000.0).round() * std::f64::consts::FRAC_PI_2)
+                .clamp(-taylor::TRIG_FAST_MAX, taylor::TRIG_FAST_MAX)
+        };
+        let (k, r, er) = taylor::reduce_half_pi(x);
+        let truth = Float::with_val(400, x) - Float::with_val(400, &half_pi * k);
+        let err = Float::with_val(400, &truth - r).abs();
+        assert!(err <= er, "x = {x:e}: error {err} > bound {er:e}");
+        assert!(r.abs() <= 0.8);
+    }
+}
