@@ -2,7 +2,11 @@
 //! of [`Interval`]: tightest results (powi: see its note), computed on the stored
 //! `(−lo, hi)` pair with the upward-rounded primitives of [`super::directed`].
 
-use super::directed::{add_up, div_up, mul_up, sqrt_down, sqrt_up};
+#[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+use super::directed::fma_detected;
+use super::directed::{
+    add_up, div_up, div_up_k, mul_up, mul_up_k, sqrt_down_k, sqrt_up_k, STATIC_FMA,
+};
 use super::Interval;
 
 /// Sign class of a non-empty interval other than `[0, 0]`, for the case tables.
@@ -79,7 +83,18 @@ impl Interval {
     ///
     /// Each lower product `xy` is rounded down as `−RU((−x)·y)`; no entry multiplies a
     /// zero bound by an infinite one (and `mul_up` returns 0 for `0·∞` anyway).
+    #[inline]
     pub fn mul(&self, rhs: &Interval) -> Interval {
+        #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+        if fma_detected() {
+            // SAFETY: the CPU supports FMA (run-time detection).
+            return unsafe { mul_fma(self, rhs) };
+        }
+        self.mul_impl::<STATIC_FMA>(rhs)
+    }
+
+    #[inline(always)]
+    pub(crate) fn mul_impl<const FMA: bool>(&self, rhs: &Interval) -> Interval {
         use Sign::*;
         if self.is_empty() || rhs.is_empty() {
             return Interval::EMPTY;
@@ -89,18 +104,18 @@ impl Interval {
         let (a, c) = (-na, -nc);
         let (neg_lo, hi) = match (self.sign_class(), rhs.sign_class()) {
             (Zero, _) | (_, Zero) => return Interval::ZERO,
-            (Pos, Pos) => (mul_up(na, c), mul_up(b, d)),
-            (Pos, Mixed) => (mul_up(b, nc), mul_up(b, d)),
-            (Pos, Neg) => (mul_up(b, nc), mul_up(a, d)),
-            (Mixed, Pos) => (mul_up(na, d), mul_up(b, d)),
+            (Pos, Pos) => (mul_up_k::<FMA>(na, c), mul_up_k::<FMA>(b, d)),
+            (Pos, Mixed) => (mul_up_k::<FMA>(b, nc), mul_up_k::<FMA>(b, d)),
+            (Pos, Neg) => (mul_up_k::<FMA>(b, nc), mul_up_k::<FMA>(a, d)),
+            (Mixed, Pos) => (mul_up_k::<FMA>(na, d), mul_up_k::<FMA>(b, d)),
             (Mixed, Mixed) => (
-                mul_up(na, d).max(mul_up(b, nc)),
-                mul_up(na, nc).max(mul_up(b, d)),
+                mul_up_k::<FMA>(na, d).max(mul_up_k::<FMA>(b, nc)),
+                mul_up_k::<FMA>(na, nc).max(mul_up_k::<FMA>(b, d)),
             ),
-            (Mixed, Neg) => (mul_up(b, nc), mul_up(na, nc)),
-            (Neg, Pos) => (mul_up(na, d), mul_up(b, c)),
-            (Neg, Mixed) => (mul_up(na, d), mul_up(na, nc)),
-            (Neg, Neg) => (mul_up(-b, d), mul_up(na, nc)),
+            (Mixed, Neg) => (mul_up_k::<FMA>(b, nc), mul_up_k::<FMA>(na, nc)),
+            (Neg, Pos) => (mul_up_k::<FMA>(na, d), mul_up_k::<FMA>(b, c)),
+            (Neg, Mixed) => (mul_up_k::<FMA>(na, d), mul_up_k::<FMA>(na, nc)),
+            (Neg, Neg) => (mul_up_k::<FMA>(-b, d), mul_up_k::<FMA>(na, nc)),
         };
         Interval::from_neg_lo_hi(neg_lo, hi)
     }
@@ -119,7 +134,18 @@ impl Interval {
     ///
     /// (`a/d` with `a = 0` is 0; no entry divides ∞ by ∞.) A certifier must treat a
     /// divisor that contains 0 as "undecided": the dropped points are poles.
+    #[inline]
     pub fn div(&self, rhs: &Interval) -> Interval {
+        #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+        if fma_detected() {
+            // SAFETY: the CPU supports FMA (run-time detection).
+            return unsafe { div_fma(self, rhs) };
+        }
+        self.div_impl::<STATIC_FMA>(rhs)
+    }
+
+    #[inline(always)]
+    pub(crate) fn div_impl<const FMA: bool>(&self, rhs: &Interval) -> Interval {
         use Sign::*;
         if self.is_empty() || rhs.is_empty() {
             return Interval::EMPTY;
@@ -134,7 +160,7 @@ impl Interval {
         if x == Zero {
             return Interval::ZERO;
         }
-        let up = div_up;
+        let up = div_up_k::<FMA>;
         // Lower bounds are stored negated: RD(p/q) = −RU((−p)/q).
         let (neg_lo, hi) = if c > 0.0 {
             match x {
@@ -175,29 +201,51 @@ impl Interval {
     }
 
     /// `self²`, tightest: `[mig², mag²]` (tighter than `self · self` when 0 ∈ self).
+    #[inline]
     pub fn sqr(&self) -> Interval {
+        #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+        if fma_detected() {
+            // SAFETY: the CPU supports FMA (run-time detection).
+            return unsafe { sqr_fma(self) };
+        }
+        self.sqr_impl::<STATIC_FMA>()
+    }
+
+    #[inline(always)]
+    pub(crate) fn sqr_impl<const FMA: bool>(&self) -> Interval {
         if self.is_empty() {
             return Interval::EMPTY;
         }
         let (na, b) = (self.neg_lo(), self.hi());
         match self.sign_class() {
             Sign::Zero => Interval::ZERO,
-            Sign::Pos => Interval::from_neg_lo_hi(mul_up(na, -na), mul_up(b, b)),
-            Sign::Neg => Interval::from_neg_lo_hi(mul_up(-b, b), mul_up(na, na)),
-            Sign::Mixed => Interval::from_neg_lo_hi(-0.0, mul_up(na, na).max(mul_up(b, b))),
+            Sign::Pos => Interval::from_neg_lo_hi(mul_up_k::<FMA>(na, -na), mul_up_k::<FMA>(b, b)),
+            Sign::Neg => Interval::from_neg_lo_hi(mul_up_k::<FMA>(-b, b), mul_up_k::<FMA>(na, na)),
+            Sign::Mixed => Interval::from_neg_lo_hi(-0.0, mul_up_k::<FMA>(na, na).max(mul_up_k::<FMA>(b, b))),
         }
     }
 
     /// `√self`, tightest; the part of `self` below 0 is dropped (IEEE 1788), so an
     /// interval entirely below 0 gives EMPTY. Bounds by [`super::directed::sqrt_down`] /
     /// [`super::directed::sqrt_up`].
+    #[inline]
     pub fn sqrt(&self) -> Interval {
+        #[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+        if fma_detected() {
+            // SAFETY: the CPU supports FMA (run-time detection).
+            return unsafe { sqrt_fma(self) };
+        }
+        self.sqrt_impl::<STATIC_FMA>()
+    }
+
+    #[inline(always)]
+    pub(crate) fn sqrt_impl<const FMA: bool>(&self) -> Interval {
         if self.is_empty() || self.hi() < 0.0 {
             return Interval::EMPTY;
         }
         let lo = self.lo();
-        let neg_lo = if lo <= 0.0 { -0.0 } else { -sqrt_down(lo) };
-        Interval::from_neg_lo_hi(neg_lo, sqrt_up(self.hi()))
+        let neg_lo = if lo <= 0.0 { -0.0 } else { -sqrt_down_k::<FMA>(lo) };
+        Interval::from_neg_lo_hi(neg_lo, sqrt_up_k::<FMA>(self.hi()))
     }
 
     /// `|self|`, tightest (exact).
@@ -351,3 +399,30 @@ fn pow_up_neg(x: f64, m: u32) -> f64 {
     }
     -result
 }
+
+/// FMA-compiled copies of the hot operations, run when the CPU has FMA but the build
+/// does not assume it (x86-64 without `+fma`): the same code with the one-instruction
+/// error term.
+#[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+mod fma_copies {
+    use super::Interval;
+
+    #[target_feature(enable = "fma")]
+    pub(super) unsafe fn mul_fma(x: &Interval, y: &Interval) -> Interval {
+        x.mul_impl::<true>(y)
+    }
+    #[target_feature(enable = "fma")]
+    pub(super) unsafe fn div_fma(x: &Interval, y: &Interval) -> Interval {
+        x.div_impl::<true>(y)
+    }
+    #[target_feature(enable = "fma")]
+    pub(super) unsafe fn sqr_fma(x: &Interval) -> Interval {
+        x.sqr_impl::<true>()
+    }
+    #[target_feature(enable = "fma")]
+    pub(super) unsafe fn sqrt_fma(x: &Interval) -> Interval {
+        x.sqrt_impl::<true>()
+    }
+}
+#[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+use fma_copies::{div_fma, mul_fma, sqr_fma, sqrt_fma};

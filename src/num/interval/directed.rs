@@ -4,7 +4,10 @@
 //! −∞) — the tightest double bound, subnormal and overflow cases included. Method: the
 //! hardware computes the round-to-nearest result `r`; an error-free transformation
 //! (two_sum; two_prod via Dekker/Veltkamp splitting, or FMA where the target has it)
-//! gives the exact sign of `exact − r`; if the exact value lies above `r`, the upward
+//! gives the exact sign of `exact − r` (FMA is used where the target has it at compile
+//! time; the interval operations also detect it at run time on x86-64 and run an
+//! FMA-compiled copy of themselves — allowed, unlike compile flags); if the exact value
+//! lies above `r`, the upward
 //! rounding is the next double above `r`, else `r` itself. Error-free transformations
 //! are exact only away from overflow and underflow; outside the guarded ranges (stated
 //! per function) the slow path asks MPFR for the correctly rounded result at 53 bits,
@@ -95,21 +98,29 @@ pub fn sub_up(a: f64, b: f64) -> f64 {
     add_up(a, -b)
 }
 
+/// True where FMA is available at compile time (aarch64, or x86-64 built with `+fma`).
+pub(crate) const STATIC_FMA: bool = cfg!(any(target_arch = "aarch64", target_feature = "fma"));
+
 /// The exact rounding error `a·b − p` of `p = RN(a·b)`, valid when `|a|, |b| ≤ 2^995`,
 /// `2^-960 ≤ |p| ≤ 2^1020` (no overflow in the split, error representable).
-/// With FMA available at compile time (aarch64, or x86-64 built with `+fma`) it is one
-/// fused multiply-add; otherwise Dekker's two_prod with Veltkamp's split
-/// (Dekker 1971; exactness without underflow: Boldo 2006).
-#[inline]
-pub(crate) fn two_prod_err(a: f64, b: f64, p: f64) -> f64 {
-    #[cfg(any(target_arch = "aarch64", target_feature = "fma"))]
-    {
+/// `FMA = true`: one fused multiply-add (call it only where FMA is a compile-time or
+/// `#[target_feature]` feature, else it is a slow libm call); `FMA = false`: Dekker's
+/// two_prod with Veltkamp's split (Dekker 1971; exactness without underflow: Boldo 2006).
+#[inline(always)]
+pub(crate) fn two_prod_err<const FMA: bool>(a: f64, b: f64, p: f64) -> f64 {
+    if FMA {
         a.mul_add(b, -p)
-    }
-    #[cfg(not(any(target_arch = "aarch64", target_feature = "fma")))]
-    {
+    } else {
         dekker_err(a, b, p)
     }
+}
+
+/// True if the CPU executing this has FMA (runtime detection, cached by std); the
+/// interval operations use it to run an FMA-compiled copy of themselves.
+#[cfg(all(target_arch = "x86_64", not(target_feature = "fma")))]
+#[inline]
+pub(crate) fn fma_detected() -> bool {
+    std::arch::is_x86_feature_detected!("fma")
 }
 
 /// Dekker's two_prod error term (always compiled, so that tests check it on every
@@ -138,9 +149,15 @@ fn product_in_safe_range(a: f64, b: f64, p: f64) -> bool {
 /// the rest is MPFR's correctly rounded product.
 #[inline]
 pub fn mul_up(a: f64, b: f64) -> f64 {
+    mul_up_k::<STATIC_FMA>(a, b)
+}
+
+/// [`mul_up`] with the error term chosen by `FMA` (see [`two_prod_err`]).
+#[inline(always)]
+pub(crate) fn mul_up_k<const FMA: bool>(a: f64, b: f64) -> f64 {
     let p = a * b;
     if product_in_safe_range(a, b, p) {
-        if two_prod_err(a, b, p) > 0.0 {
+        if two_prod_err::<FMA>(a, b, p) > 0.0 {
             next_up(p)
         } else {
             p
@@ -175,11 +192,17 @@ pub fn mul_down(a: f64, b: f64) -> f64 {
 /// otherwise exact special values (infinities, zero dividend) or MPFR.
 #[inline]
 pub fn div_up(a: f64, b: f64) -> f64 {
+    div_up_k::<STATIC_FMA>(a, b)
+}
+
+/// [`div_up`] with the error term chosen by `FMA`.
+#[inline(always)]
+pub(crate) fn div_up_k<const FMA: bool>(a: f64, b: f64) -> f64 {
     let q = a / b;
     let aa = a.abs();
     if (TINY..=PRODUCT_MAX).contains(&aa) && product_in_safe_range(q, b, q * b) {
         let p = q * b;
-        let e = two_prod_err(q, b, p);
+        let e = two_prod_err::<FMA>(q, b, p);
         let r = (a - p) - e;
         if r != 0.0 && (r > 0.0) == (b > 0.0) {
             next_up(q)
@@ -208,11 +231,11 @@ pub fn div_down(a: f64, b: f64) -> f64 {
 
 /// Sign of `x − RN(√x)²` as −1, 0, 1, for `2^-960 ≤ x ≤ 2^1020` (two_prod of the
 /// root, Sterbenz for `x − p`); `None` outside that range.
-#[inline]
-fn sqrt_residual_sign(x: f64, s: f64) -> Option<i8> {
+#[inline(always)]
+fn sqrt_residual_sign<const FMA: bool>(x: f64, s: f64) -> Option<i8> {
     if (TINY..=PRODUCT_MAX).contains(&x) {
         let p = s * s;
-        let r = (x - p) - two_prod_err(s, s, p);
+        let r = (x - p) - two_prod_err::<FMA>(s, s, p);
         Some(if r > 0.0 {
             1
         } else if r < 0.0 {
@@ -229,8 +252,14 @@ fn sqrt_residual_sign(x: f64, s: f64) -> Option<i8> {
 /// `x − s²` says on which side of `s` the exact root lies). MPFR outside the safe range.
 #[inline]
 pub fn sqrt_up(x: f64) -> f64 {
+    sqrt_up_k::<STATIC_FMA>(x)
+}
+
+/// [`sqrt_up`] with the error term chosen by `FMA`.
+#[inline(always)]
+pub(crate) fn sqrt_up_k<const FMA: bool>(x: f64) -> f64 {
     let s = x.sqrt();
-    match sqrt_residual_sign(x, s) {
+    match sqrt_residual_sign::<FMA>(x, s) {
         Some(1) => next_up(s),
         Some(_) => s,
         None => sqrt_special(x, s, Round::Up),
@@ -240,8 +269,14 @@ pub fn sqrt_up(x: f64) -> f64 {
 /// `√x` rounded down, `x ≥ 0`.
 #[inline]
 pub fn sqrt_down(x: f64) -> f64 {
+    sqrt_down_k::<STATIC_FMA>(x)
+}
+
+/// [`sqrt_down`] with the error term chosen by `FMA`.
+#[inline(always)]
+pub(crate) fn sqrt_down_k<const FMA: bool>(x: f64) -> f64 {
     let s = x.sqrt();
-    match sqrt_residual_sign(x, s) {
+    match sqrt_residual_sign::<FMA>(x, s) {
         Some(-1) => next_down(s),
         Some(_) => s,
         None => sqrt_special(x, s, Round::Down),

@@ -49,6 +49,7 @@ fn add_mul_div_round_up_exactly_over_the_whole_range() {
         assert!(is_rounded_down(mul_down(a, b), &Rational::from(&ea * &eb)));
         if b != 0.0 {
             let q = div_up(a, b);
+            assert_eq!((div_up_k::<true>(a, b), div_up_k::<false>(a, b)), (q, q));
             assert!(
                 is_rounded_up(q, &Rational::from(&ea / &eb)),
                 "div_up({a:e}, {b:e}) = {q:e}"
@@ -108,6 +109,8 @@ fn sqrt_rounds_both_ways_exactly() {
     for _ in 0..N {
         let x = rng.double(-1074, 1023).abs();
         let (lo, hi) = (sqrt_down(x), sqrt_up(x));
+        assert_eq!((sqrt_down_k::<true>(x), sqrt_up_k::<true>(x)), (lo, hi));
+        assert_eq!((sqrt_down_k::<false>(x), sqrt_up_k::<false>(x)), (lo, hi));
         let ex = exact(x);
         // hi ≥ √x ⇔ hi² ≥ x; the double below hi is < √x.
         assert!(
@@ -485,5 +488,24 @@ fn trig_reduction_error_bound_holds() {
         let err = Float::with_val(400, &truth - r).abs();
         assert!(err <= er, "x = {x:e}: error {err} > bound {er:e}");
         assert!(r.abs() <= 0.8);
+    }
+}
+
+#[test]
+fn fma_and_dekker_copies_of_the_operations_agree() {
+    // The public operations pick one copy at run time; both must give the same (tightest)
+    // result, so the copy not chosen on this machine is tested too.
+    let mut rng = Rng::new(9);
+    for _ in 0..N / 4 {
+        let x = random_interval(&mut rng, -1074, 1023);
+        let y = random_interval(&mut rng, -1074, 1023);
+        let m = x.mul(&y);
+        assert_eq!((x.mul_impl::<true>(&y), x.mul_impl::<false>(&y)), (m, m));
+        let d = x.div(&y);
+        assert_eq!((x.div_impl::<true>(&y), x.div_impl::<false>(&y)), (d, d));
+        let s = x.sqr();
+        assert_eq!((x.sqr_impl::<true>(), x.sqr_impl::<false>()), (s, s));
+        let r = x.sqrt();
+        assert_eq!((x.sqrt_impl::<true>(), x.sqrt_impl::<false>()), (r, r));
     }
 }
