@@ -221,7 +221,9 @@ impl Interval {
             Sign::Zero => Interval::ZERO,
             Sign::Pos => Interval::from_neg_lo_hi(mul_up_k::<FMA>(na, -na), mul_up_k::<FMA>(b, b)),
             Sign::Neg => Interval::from_neg_lo_hi(mul_up_k::<FMA>(-b, b), mul_up_k::<FMA>(na, na)),
-            Sign::Mixed => Interval::from_neg_lo_hi(-0.0, mul_up_k::<FMA>(na, na).max(mul_up_k::<FMA>(b, b))),
+            Sign::Mixed => {
+                Interval::from_neg_lo_hi(-0.0, mul_up_k::<FMA>(na, na).max(mul_up_k::<FMA>(b, b)))
+            }
         }
     }
 
@@ -244,7 +246,11 @@ impl Interval {
             return Interval::EMPTY;
         }
         let lo = self.lo();
-        let neg_lo = if lo <= 0.0 { -0.0 } else { -sqrt_down_k::<FMA>(lo) };
+        let neg_lo = if lo <= 0.0 {
+            -0.0
+        } else {
+            -sqrt_down_k::<FMA>(lo)
+        };
         Interval::from_neg_lo_hi(neg_lo, sqrt_up_k::<FMA>(self.hi()))
     }
 
@@ -263,7 +269,7 @@ impl Interval {
     /// Monotonicity: even `n > 0` gives `[mig^n, mag^n]`, odd `n > 0` is increasing,
     /// `n < 0` even gives `[mag^n, mig^n]`, odd is decreasing on each side of 0.
     /// Exponents 0, ±1, 2 are tightest; otherwise each endpoint power is computed by
-    /// [`directed_pow`]: binary powering with every product rounded in the direction
+    /// `directed_pow`: binary powering with every product rounded in the direction
     /// that keeps the bound (and one directed division for `n < 0`) — within about
     /// `2|n|` ulps, NOT tightest — or MPFR (tightest) when an intermediate could leave
     /// the normal range.

@@ -7,7 +7,7 @@
 //!
 //! Which endpoint gives which bound comes from the monotonicity of the function; for
 //! sin/cos/tan, from which multiples of π/2 the argument may contain
-//! ([`super::cases::half_pi_multiples`]), decided from rigorous enclosures of the
+//! (`cases::half_pi_multiples`), decided from rigorous enclosures of the
 //! reduced arguments (never from a rounded comparison with an approximation of π).
 
 use rug::float::Round;
@@ -131,7 +131,7 @@ impl Interval {
     }
 
     /// `sin`: extrema +1 at `π/2 + 2jπ`, −1 at `−π/2 + 2jπ` (inclusion decided by
-    /// [`super::cases::half_pi_multiples`] from enclosures of the reduced endpoints),
+    /// `cases::half_pi_multiples` from enclosures of the reduced endpoints),
     /// else the hull of the endpoint values. Endpoints: Taylor path for `|x| ≤ 2^19`
     /// (a few ulps wide), MPFR otherwise (tightest). Unbounded or width ≥ 7 > 2π:
     /// `[−1, 1]`.
@@ -239,7 +239,7 @@ impl Interval {
 
     /// `atan2(self, x)`: the angle in `(−π, π]` of the points `(x, y)` of the box
     /// `x × self` other than the origin (IEEE 1788 `atan2`), tightest. The case
-    /// analysis ([`super::cases::atan2_plan`]: branch cut on the negative x-axis, where
+    /// analysis (`cases::atan2_plan`: branch cut on the negative x-axis, where
     /// the angle is π; the origin dropped) picks corners, evaluated by MPFR with
     /// directed rounding, or the constants ±π, ±π/2, 0 rounded outward. EMPTY if either
     /// operand is empty or the box is the origin.

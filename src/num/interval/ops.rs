@@ -112,6 +112,34 @@ macro_rules! impl_interval_ops {
 
 pub(crate) use impl_interval_ops;
 
+/// Inside a trait impl for `$T`: trait methods that forward to the inherent methods of
+/// the same name (`fn m(&self) -> Self`, `fn m(&self, other: &Self) -> R`, …), so that
+/// `Real`/`IntervalLike` impls list only what differs between the interval types.
+macro_rules! forward_to_inherent {
+    ($T:ty; unary: $($u:ident),* ; binary: $($b:ident -> $R:ty),* ; predicates: $($p:ident),*) => {
+        $(
+            #[inline]
+            fn $u(&self) -> Self {
+                <$T>::$u(self)
+            }
+        )*
+        $(
+            #[inline]
+            fn $b(&self, other: &Self) -> $R {
+                <$T>::$b(self, other)
+            }
+        )*
+        $(
+            #[inline]
+            fn $p(&self) -> bool {
+                <$T>::$p(self)
+            }
+        )*
+    };
+}
+
+pub(crate) use forward_to_inherent;
+
 impl_interval_ops!(super::Interval, |_: &super::Interval, v: f64| {
     super::Interval::point(v)
 });

@@ -3,9 +3,12 @@
 
 use super::mpfr_eval::{PI_DOWN, PI_UP};
 use super::Interval;
+use crate::num::interval::ops::forward_to_inherent;
 use crate::num::{IntervalLike, Real};
 
 impl Real for Interval {
+    forward_to_inherent!(Interval; unary: sqr, sqrt, sin, cos, tan, exp, ln, sinh, cosh;
+        binary: atan2 -> Self; predicates: );
     /// The point interval `[v, v]` (exact).
     fn lift(&self, v: f64) -> Self {
         Interval::point(v)
@@ -14,38 +17,8 @@ impl Real for Interval {
     fn pi_like(&self) -> Self {
         Interval::from_neg_lo_hi(-PI_DOWN, PI_UP)
     }
-    fn sqr(&self) -> Self {
-        Interval::sqr(self)
-    }
-    fn sqrt(&self) -> Self {
-        Interval::sqrt(self)
-    }
     fn powi(&self, n: i32) -> Self {
         Interval::powi(self, n)
-    }
-    fn sin(&self) -> Self {
-        Interval::sin(self)
-    }
-    fn cos(&self) -> Self {
-        Interval::cos(self)
-    }
-    fn tan(&self) -> Self {
-        Interval::tan(self)
-    }
-    fn exp(&self) -> Self {
-        Interval::exp(self)
-    }
-    fn ln(&self) -> Self {
-        Interval::ln(self)
-    }
-    fn sinh(&self) -> Self {
-        Interval::sinh(self)
-    }
-    fn cosh(&self) -> Self {
-        Interval::cosh(self)
-    }
-    fn atan2(&self, x: &Self) -> Self {
-        Interval::atan2(self, x)
     }
     fn mid(&self) -> f64 {
         self.midpoint()
@@ -56,6 +29,12 @@ impl Real for Interval {
 }
 
 impl IntervalLike for Interval {
+    forward_to_inherent!(Interval; unary: abs;
+        binary: is_subset -> bool, is_interior_subset -> bool, hull -> Self, intersection -> Self;
+        predicates: contains_zero, is_empty, is_entire);
+    fn bisect(&self) -> (Self, Self) {
+        Interval::bisect(self)
+    }
     fn with_bounds(&self, lo: f64, hi: f64) -> Self {
         Interval::from_bounds(lo, hi)
     }
@@ -90,38 +69,11 @@ impl IntervalLike for Interval {
     fn mig(&self) -> f64 {
         Interval::mig(self)
     }
-    fn contains_zero(&self) -> bool {
-        Interval::contains_zero(self)
-    }
     fn contains_value(&self, x: f64) -> bool {
         self.contains(x)
     }
-    fn is_subset(&self, other: &Self) -> bool {
-        Interval::is_subset(self, other)
-    }
-    fn is_interior_subset(&self, other: &Self) -> bool {
-        Interval::is_interior_subset(self, other)
-    }
-    fn abs(&self) -> Self {
-        Interval::abs(self)
-    }
-    fn hull(&self, other: &Self) -> Self {
-        Interval::hull(self, other)
-    }
-    fn intersection(&self, other: &Self) -> Self {
-        Interval::intersection(self, other)
-    }
-    fn bisect(&self) -> (Self, Self) {
-        Interval::bisect(self)
-    }
     fn precision_bits(&self) -> u32 {
         53
-    }
-    fn is_empty(&self) -> bool {
-        Interval::is_empty(self)
-    }
-    fn is_entire(&self) -> bool {
-        Interval::is_entire(self)
     }
 }
 

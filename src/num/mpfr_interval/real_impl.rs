@@ -5,7 +5,7 @@ use rug::float::{Constant, Round};
 use rug::Float;
 
 use super::MpfrInterval;
-use crate::num::interval::ops::impl_interval_ops;
+use crate::num::interval::ops::{forward_to_inherent, impl_interval_ops};
 use crate::num::{IntervalLike, Real};
 
 impl_interval_ops!(
@@ -14,6 +14,8 @@ impl_interval_ops!(
 );
 
 impl Real for MpfrInterval {
+    forward_to_inherent!(MpfrInterval; unary: sqr, sqrt, sin, cos, tan, exp, ln, sinh, cosh;
+        binary: atan2 -> Self; predicates: );
     /// `[v, v]` at the precision of `self` (exact from 53 bits up).
     fn lift(&self, v: f64) -> Self {
         MpfrInterval::point(v, self.prec())
@@ -26,38 +28,8 @@ impl Real for MpfrInterval {
             Float::with_val_round(p, Constant::Pi, Round::Up).0,
         )
     }
-    fn sqr(&self) -> Self {
-        MpfrInterval::sqr(self)
-    }
-    fn sqrt(&self) -> Self {
-        MpfrInterval::sqrt(self)
-    }
     fn powi(&self, n: i32) -> Self {
         MpfrInterval::powi(self, n)
-    }
-    fn sin(&self) -> Self {
-        MpfrInterval::sin(self)
-    }
-    fn cos(&self) -> Self {
-        MpfrInterval::cos(self)
-    }
-    fn tan(&self) -> Self {
-        MpfrInterval::tan(self)
-    }
-    fn exp(&self) -> Self {
-        MpfrInterval::exp(self)
-    }
-    fn ln(&self) -> Self {
-        MpfrInterval::ln(self)
-    }
-    fn sinh(&self) -> Self {
-        MpfrInterval::sinh(self)
-    }
-    fn cosh(&self) -> Self {
-        MpfrInterval::cosh(self)
-    }
-    fn atan2(&self, x: &Self) -> Self {
-        MpfrInterval::atan2(self, x)
     }
     /// The midpoint rounded to the nearest double.
     fn mid(&self) -> f64 {
@@ -70,6 +42,12 @@ impl Real for MpfrInterval {
 }
 
 impl IntervalLike for MpfrInterval {
+    forward_to_inherent!(MpfrInterval; unary: abs;
+        binary: is_subset -> bool, is_interior_subset -> bool, hull -> Self, intersection -> Self;
+        predicates: contains_zero, is_empty, is_entire);
+    fn bisect(&self) -> (Self, Self) {
+        MpfrInterval::bisect(self)
+    }
     fn with_bounds(&self, lo: f64, hi: f64) -> Self {
         MpfrInterval::from_bounds(lo, hi, self.prec())
     }
@@ -100,38 +78,11 @@ impl IntervalLike for MpfrInterval {
     fn mig(&self) -> f64 {
         self.mig_float().to_f64_round(Round::Down)
     }
-    fn contains_zero(&self) -> bool {
-        MpfrInterval::contains_zero(self)
-    }
     fn contains_value(&self, x: f64) -> bool {
         self.contains(x)
     }
-    fn is_subset(&self, other: &Self) -> bool {
-        MpfrInterval::is_subset(self, other)
-    }
-    fn is_interior_subset(&self, other: &Self) -> bool {
-        MpfrInterval::is_interior_subset(self, other)
-    }
-    fn abs(&self) -> Self {
-        MpfrInterval::abs(self)
-    }
-    fn hull(&self, other: &Self) -> Self {
-        MpfrInterval::hull(self, other)
-    }
-    fn intersection(&self, other: &Self) -> Self {
-        MpfrInterval::intersection(self, other)
-    }
-    fn bisect(&self) -> (Self, Self) {
-        MpfrInterval::bisect(self)
-    }
     fn precision_bits(&self) -> u32 {
         self.prec()
-    }
-    fn is_empty(&self) -> bool {
-        MpfrInterval::is_empty(self)
-    }
-    fn is_entire(&self) -> bool {
-        MpfrInterval::is_entire(self)
     }
 }
 
