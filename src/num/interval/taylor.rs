@@ -9,6 +9,10 @@
 //! with `E' = E·(1 + 2^-40)` (+ `64·2^-1074` for results below 10^-270): the factor
 //! covers the ≤ 20 roundings in computing `E` itself, the additive term any underflow. A few ulps wide, not
 //! tightest; the callers use MPFR outside `|x| ≤ 2^19` (trig) and `|x| ≤ 700` (exp).
+//! The numeric constants of each bound are re-derived from their definitions at 300 bits
+//! by the test `taylor_error_bound_constants_rederived`; the enclosures are checked
+//! against 200-bit MPFR values (`taylor_sin_cos_exp_enclose_200_bit_values…`) and, per
+//! interval, against a brute-force 2000-bit range (tests/interval_elementary.rs).
 //!
 //! Constants, each checked by `taylor_constants_are_what_they_claim`: `P1`, `P2` are the
 //! first two 33-bit pieces of π/2 (31 and 32 significant bits), `P3` the double nearest
