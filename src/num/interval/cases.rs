@@ -25,7 +25,7 @@ pub(crate) fn half_pi_multiples(
 ) -> u8 {
     let skip_a = u64::from(!a_at_or_below);
     let skip_b = u64::from(!b_at_or_above);
-    let count = (span + 1).saturating_sub(skip_a + skip_b);
+    let count = span.saturating_add(1).saturating_sub(skip_a + skip_b);
     if count >= 4 {
         return 0b1111;
     }
@@ -143,6 +143,8 @@ mod tests {
         assert_eq!(half_pi_multiples(3, 5, true, true), 0b1111);
         // k_a ≡ 3, skip it, then m ≡ 0, 1.
         assert_eq!(half_pi_multiples(3, 2, false, true), 0b0011);
+        // A saturated span means "many": every class.
+        assert_eq!(half_pi_multiples(0, u64::MAX, false, false), 0b1111);
     }
 
     #[test]
