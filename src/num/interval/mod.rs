@@ -38,6 +38,7 @@ pub mod directed;
 mod elementary;
 mod mpfr_eval;
 pub(crate) mod ops;
+mod powi;
 mod real_impl;
 mod set_ops;
 mod taylor;
