@@ -2,6 +2,12 @@
 //! filters, f64 intervals with outward rounding, MPFR intervals, exact rationals and
 //! correctly rounded conversion to f64.
 
+pub mod interval;
+pub mod interval_like;
+pub mod mpfr_interval;
 pub mod real;
 
+pub use interval::Interval;
+pub use interval_like::IntervalLike;
+pub use mpfr_interval::MpfrInterval;
 pub use real::Real;

@@ -5,6 +5,11 @@
 //! Contract for implementors that are enclosures (intervals): every operation returns
 //! a set that contains the exact result of the operation applied to every point of the
 //! operands. For `f64` the operations are the ordinary (rounded) ones and prove nothing.
+//! The interval types follow IEEE 1788 set semantics: points where an operation is
+//! undefined are dropped (`√[-4, 1] = [0, 1]`; `x / [0, 0]` is empty; a divisor with 0
+//! inside gives the whole line), so an interval result can be EMPTY — generic
+//! certification code checks [`crate::num::IntervalLike::is_empty`] before concluding
+//! anything from an inclusion (see [`crate::num::interval`] "Domain and emptiness").
 //!
 //! Constants enter a formula through [`Real::lift`], which produces the exact value in
 //! the number system (and precision) of an existing number, so MPFR intervals keep
