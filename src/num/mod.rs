@@ -2,6 +2,13 @@
 //! filters, f64 intervals with outward rounding, MPFR intervals, exact rationals and
 //! correctly rounded conversion to f64.
 
+pub mod dd;
+pub mod error_bound;
+pub mod filter;
+pub mod parse;
 pub mod real;
+pub mod ring;
+pub mod round;
 
 pub use real::Real;
+pub use round::Rounded;
