@@ -103,7 +103,12 @@ impl<T> Certified<T> {
     }
 
     /// An answer for which nothing is proven, with the reason.
-    pub fn undecided(value: T, arithmetic: Arithmetic, bits: u32, reason: impl Into<String>) -> Self {
+    pub fn undecided(
+        value: T,
+        arithmetic: Arithmetic,
+        bits: u32,
+        reason: impl Into<String>,
+    ) -> Self {
         Certified {
             value,
             status: Status::Undecided,

@@ -38,13 +38,26 @@ pub enum GeomError {
     NonPositiveWeight { field: String, value: String },
     /// Counts that must agree do not (control points vs degree, weights vs points).
     #[error("{field}: expected {expected}, found {found}")]
-    CountMismatch { field: String, expected: String, found: String },
+    CountMismatch {
+        field: String,
+        expected: String,
+        found: String,
+    },
     /// A parameter interval `[lo, hi]` that is empty or inverted.
     #[error("{field}: the interval [{lo}, {hi}] is empty or inverted")]
-    EmptyDomain { field: String, lo: String, hi: String },
+    EmptyDomain {
+        field: String,
+        lo: String,
+        hi: String,
+    },
     /// A parameter value outside the object's domain.
     #[error("{field}: parameter {value} is outside the domain [{lo}, {hi}]")]
-    ParameterOutsideDomain { field: String, value: String, lo: String, hi: String },
+    ParameterOutsideDomain {
+        field: String,
+        value: String,
+        lo: String,
+        hi: String,
+    },
     /// A value that is finite but not allowed (a zero radius, a negative degree, ...).
     #[error("{field}: {reason}")]
     InvalidValue { field: String, reason: String },
@@ -151,9 +164,15 @@ mod tests {
 
     #[test]
     fn at_builds_field_paths() {
-        let e = GeomError::ZeroDirection { field: "dir".into() }.at("objects[1]");
+        let e = GeomError::ZeroDirection {
+            field: "dir".into(),
+        }
+        .at("objects[1]");
         assert_eq!(e.field(), "objects[1].dir");
-        let e = GeomError::ZeroDirection { field: "[2]".into() }.at("points");
+        let e = GeomError::ZeroDirection {
+            field: "[2]".into(),
+        }
+        .at("points");
         assert_eq!(e.field(), "points[2]");
         assert_eq!(e.kind(), "zero_direction");
     }

@@ -11,6 +11,7 @@
 
 pub mod certificate;
 pub mod error;
+pub mod geom;
 pub mod num;
 
 pub use certificate::{Arithmetic, Certified, Status};

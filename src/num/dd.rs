@@ -115,7 +115,11 @@ impl<M: ProductMode> Dd<M> {
     /// The double `x`, exactly.
     #[inline(always)]
     pub fn from_f64(x: f64) -> Self {
-        Dd { h: x, l: 0.0, mode: PhantomData }
+        Dd {
+            h: x,
+            l: 0.0,
+            mode: PhantomData,
+        }
     }
     /// `h + l` from parts the caller knows to be normalised (`|l| ≤ ulp(h)/2`),
     /// e.g. the output of [`two_sum`] or [`fast_two_sum`].
@@ -125,7 +129,11 @@ impl<M: ProductMode> Dd<M> {
     }
     #[inline(always)]
     fn new(h: f64, l: f64) -> Self {
-        Dd { h, l, mode: PhantomData }
+        Dd {
+            h,
+            l,
+            mode: PhantomData,
+        }
     }
     /// True when every part is finite (an overflow makes a part infinite or NaN).
     #[inline(always)]
@@ -138,6 +146,10 @@ impl<M: ProductMode> Ring for Dd<M> {
     #[inline(always)]
     fn zero() -> Self {
         Self::from_f64(0.0)
+    }
+    #[inline(always)]
+    fn one() -> Self {
+        Self::from_f64(1.0)
     }
     #[inline(always)]
     fn plus(&self, b: &Self) -> Self {
@@ -209,12 +221,16 @@ mod tests {
         let (a, b) = (1.0 + f64::EPSILON, 1.0 - f64::EPSILON);
         for (p, e) in [WithFma::two_prod(a, b), WithoutFma::two_prod(a, b)] {
             let exact = Rational::from_f64(a).unwrap() * Rational::from_f64(b).unwrap();
-            assert_eq!(Rational::from_f64(p).unwrap() + Rational::from_f64(e).unwrap(), exact);
+            assert_eq!(
+                Rational::from_f64(p).unwrap() + Rational::from_f64(e).unwrap(),
+                exact
+            );
         }
         let (s, t) = two_sum(1e16, 1.0 + f64::EPSILON * 4.0);
         assert_eq!(
             Rational::from_f64(s).unwrap() + Rational::from_f64(t).unwrap(),
-            Rational::from_f64(1e16).unwrap() + Rational::from_f64(1.0 + f64::EPSILON * 4.0).unwrap()
+            Rational::from_f64(1e16).unwrap()
+                + Rational::from_f64(1.0 + f64::EPSILON * 4.0).unwrap()
         );
     }
 }

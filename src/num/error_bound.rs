@@ -43,7 +43,10 @@ impl ErrorBound {
 
     /// The componentwise maximum (the worst case of two ways to compute a value).
     pub fn max(self, o: ErrorBound) -> ErrorBound {
-        ErrorBound { b: self.b.max(o.b), e: self.e.max(o.e) }
+        ErrorBound {
+            b: self.b.max(o.b),
+            e: self.e.max(o.e),
+        }
     }
 
     /// The error bound in units of u².
@@ -56,9 +59,15 @@ impl Ring for ErrorBound {
     fn zero() -> Self {
         ErrorBound { b: 0.0, e: 0.0 }
     }
+    fn one() -> Self {
+        ErrorBound { b: 1.0, e: 0.0 }
+    }
     fn plus(&self, c: &Self) -> Self {
         let s = self.b + c.b;
-        ErrorBound { b: (1.0 + 5.0 * U) * s, e: self.e + c.e + 5.0 * U * U * s }
+        ErrorBound {
+            b: (1.0 + 5.0 * U) * s,
+            e: self.e + c.e + 5.0 * U * U * s,
+        }
     }
     fn minus(&self, c: &Self) -> Self {
         self.plus(c)

@@ -102,7 +102,13 @@ pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Op
     const C_MIN: f64 = 9.332636185032189e-302; // 2^-1000
     const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
     let (pa, qa) = (p.h.abs(), q.h.abs());
-    if !(pa >= TINY && qa >= TINY && ep.is_finite() && eq.is_finite() && p.is_finite() && q.is_finite()) {
+    if !(pa >= TINY
+        && qa >= TINY
+        && ep.is_finite()
+        && eq.is_finite()
+        && p.is_finite()
+        && q.is_finite())
+    {
         return None;
     }
     let q_lo = (qa - add_up(q.l.abs(), eq)) * (1.0 - 4.0 * U);

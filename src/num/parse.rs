@@ -101,9 +101,15 @@ mod tests {
     #[test]
     fn parses_fractions_and_decimals_exactly() {
         assert_eq!(parse_rational("x", "1/3").unwrap(), Rational::from((1, 3)));
-        assert_eq!(parse_rational("x", "-6/4").unwrap(), Rational::from((-3, 2)));
+        assert_eq!(
+            parse_rational("x", "-6/4").unwrap(),
+            Rational::from((-3, 2))
+        );
         assert_eq!(parse_rational("x", "0.1").unwrap(), Rational::from((1, 10)));
-        assert_eq!(parse_rational("x", "-1.5e-3").unwrap(), Rational::from((-3, 2000)));
+        assert_eq!(
+            parse_rational("x", "-1.5e-3").unwrap(),
+            Rational::from((-3, 2000))
+        );
         assert_eq!(parse_rational("x", "+2E2").unwrap(), Rational::from(200));
         assert_eq!(parse_rational("x", ".5").unwrap(), Rational::from((1, 2)));
         assert_eq!(parse_rational("x", "5.").unwrap(), Rational::from(5));
@@ -113,12 +119,31 @@ mod tests {
 
     #[test]
     fn rejects_malformed_text_naming_the_field() {
-        for bad in ["", "-", "1/0", "1/-2", "1.2.3", "e5", "1e", "0x10", "1/2/3", " 1", "nan", "1e999999999"] {
+        for bad in [
+            "",
+            "-",
+            "1/0",
+            "1/-2",
+            "1.2.3",
+            "e5",
+            "1e",
+            "0x10",
+            "1/2/3",
+            " 1",
+            "nan",
+            "1e999999999",
+        ] {
             let e = parse_rational("objects[0].origin[1]", bad).unwrap_err();
             assert_eq!(e.kind(), "invalid_number", "{bad}");
             assert_eq!(e.field(), "objects[0].origin[1]");
         }
-        assert_eq!(rational_from_f64("d", f64::NAN).unwrap_err().kind(), "non_finite");
-        assert_eq!(rational_from_f64("d", 0.1).unwrap(), Rational::from_f64(0.1).unwrap());
+        assert_eq!(
+            rational_from_f64("d", f64::NAN).unwrap_err().kind(),
+            "non_finite"
+        );
+        assert_eq!(
+            rational_from_f64("d", 0.1).unwrap(),
+            Rational::from_f64(0.1).unwrap()
+        );
     }
 }

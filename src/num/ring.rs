@@ -21,6 +21,8 @@ use std::cmp::Ordering;
 pub trait Ring: Clone {
     /// The additive identity.
     fn zero() -> Self;
+    /// The multiplicative identity.
+    fn one() -> Self;
     fn plus(&self, rhs: &Self) -> Self;
     fn minus(&self, rhs: &Self) -> Self;
     fn times(&self, rhs: &Self) -> Self;
@@ -47,6 +49,10 @@ impl Ring for f64 {
     #[inline(always)]
     fn zero() -> Self {
         0.0
+    }
+    #[inline(always)]
+    fn one() -> Self {
+        1.0
     }
     #[inline(always)]
     fn plus(&self, rhs: &Self) -> Self {
@@ -88,6 +94,9 @@ impl Field for f64 {
 impl Ring for Rational {
     fn zero() -> Self {
         Rational::new()
+    }
+    fn one() -> Self {
+        Rational::from(1)
     }
     fn plus(&self, rhs: &Self) -> Self {
         Rational::from(self + rhs)

@@ -31,15 +31,27 @@ pub struct Rounded {
 impl Rounded {
     /// A value that is exactly the double `x`.
     pub fn exact(x: f64) -> Rounded {
-        Rounded { nearest: x, lo: x, hi: x }
+        Rounded {
+            nearest: x,
+            lo: x,
+            hi: x,
+        }
     }
 
     /// `x` is the nearest double and the value lies strictly between `x` and its
     /// neighbour on the side given by `side` (`Greater`: the value is above `x`).
     pub fn inexact(x: f64, side: Ordering) -> Rounded {
         match side {
-            Ordering::Greater => Rounded { nearest: x, lo: x, hi: x.next_up() },
-            Ordering::Less => Rounded { nearest: x, lo: x.next_down(), hi: x },
+            Ordering::Greater => Rounded {
+                nearest: x,
+                lo: x,
+                hi: x.next_up(),
+            },
+            Ordering::Less => Rounded {
+                nearest: x,
+                lo: x.next_down(),
+                hi: x,
+            },
             Ordering::Equal => Rounded::exact(x),
         }
     }
@@ -92,9 +104,17 @@ fn from_rounded_float(f: &Float, dir: Ordering) -> Rounded {
     let limit = Float::with_val(53, Float::u_exp(1, 1024));
     if f.clone().abs() >= limit {
         return if f.is_sign_positive() {
-            Rounded { nearest: f64::INFINITY, lo: f64::MAX, hi: f64::INFINITY }
+            Rounded {
+                nearest: f64::INFINITY,
+                lo: f64::MAX,
+                hi: f64::INFINITY,
+            }
         } else {
-            Rounded { nearest: f64::NEG_INFINITY, lo: f64::NEG_INFINITY, hi: -f64::MAX }
+            Rounded {
+                nearest: f64::NEG_INFINITY,
+                lo: f64::NEG_INFINITY,
+                hi: -f64::MAX,
+            }
         };
     }
     let d = f.to_f64();
@@ -166,7 +186,11 @@ pub fn sqrt_rational(q: &Rational) -> Rounded {
                 / 2u32;
             if Rational::from(&m * &m) == *q {
                 let even = if a.to_bits() & 1 == 0 { a } else { b };
-                return Rounded { nearest: even, lo: a, hi: b };
+                return Rounded {
+                    nearest: even,
+                    lo: a,
+                    hi: b,
+                };
             }
         }
         prec *= 2;

@@ -1,0 +1,324 @@
+//! Line (ranged line, segment) ∩ plane, OPERATIONS.md §5.1.
+//!
+//! With `N` the plane's unnormalised normal and `f(x) = N·(x − o)` (or `n·x + d`), the
+//! carrier `c(t) = c₀ + t c'` meets the plane where `f(c₀) + t N·c' = 0`, i.e. eq. (5.1)
+//! with the normalisation of `n̂` cancelled:
+//! `t = −f(c₀)/(N·c')`, `p = (c₀ (N·c') − f(c₀) c')/(N·c')`. The plane parameters follow
+//! from Cramer's rule on `u·s₁ + v·s₂ − t c' = c₀ − s₀` (equivalent to (3.7)–(3.8) for a
+//! point of the plane, with a lower degree): `u = det(w, s₂, c')/(N·c')`,
+//! `v = det(s₁, w, c')/(N·c')`, `w = c₀ − s₀`, since `det(s₁, s₂, c') = N·c'`.
+//! `N·c' = 0` exactly: `Contained` if `f(c₀) = 0`, else `Parallel`.
+
+use nalgebra::{Scalar, Vector2, Vector3};
+use rug::Rational;
+
+use super::data::{LineData, Linear, PlaneData};
+use super::exact_tier::{filter_certified, Rounder};
+use super::objects::Plane;
+use crate::certificate::Certified;
+use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::filter::{bound, extend_scale, fma_available, group_scale, round_ratio, sign_of};
+use crate::num::ring::{det3, dot3, sub3, Field, Ring, V2, V3};
+use crate::num::round::Rounded;
+
+/// Where a line meets a plane: the point, the line parameter `t` and, for a parametric
+/// plane, the plane parameters `(u, v)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinePlanePoint<S> {
+    pub point: Vector3<S>,
+    pub t: S,
+    pub uv: Option<Vector2<S>>,
+}
+
+/// The result of line ∩ plane.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LinePlane<S> {
+    /// One point, inside the line's domain.
+    Point(LinePlanePoint<S>),
+    /// The carrier is parallel to the plane and off it: empty.
+    Parallel,
+    /// The whole line (segment, ranged line) lies in the plane.
+    Contained,
+    /// Empty: the carrier meets the plane at this point, outside the line's domain.
+    OutsideDomain(LinePlanePoint<S>),
+}
+
+impl<S: Scalar> LinePlanePoint<S> {
+    fn map<T: Scalar>(self, mut f: impl FnMut(S) -> T) -> LinePlanePoint<T> {
+        LinePlanePoint {
+            point: self.point.map(&mut f),
+            t: f(self.t),
+            uv: self.uv.map(|uv| uv.map(&mut f)),
+        }
+    }
+}
+
+impl<S: Scalar> LinePlane<S> {
+    /// Apply `f` to every number of the result.
+    pub fn map<T: Scalar>(self, f: impl FnMut(S) -> T) -> LinePlane<T> {
+        match self {
+            LinePlane::Point(p) => LinePlane::Point(p.map(f)),
+            LinePlane::OutsideDomain(p) => LinePlane::OutsideDomain(p.map(f)),
+            LinePlane::Parallel => LinePlane::Parallel,
+            LinePlane::Contained => LinePlane::Contained,
+        }
+    }
+}
+
+/// The polynomials of the operation (written once for every ring).
+pub(crate) struct Terms<R> {
+    /// `N·c'`: the common denominator.
+    pub den: R,
+    /// `f(c₀)`.
+    pub f0: R,
+    /// Numerators of the point: `c₀ (N·c') − f(c₀) c'`.
+    pub pnum: V3<R>,
+    /// Numerators of `(u, v)`: `det(w, s₂, c')`, `det(s₁, w, c')`.
+    pub uvnum: Option<V2<R>>,
+}
+
+#[inline(always)]
+pub(crate) fn terms<R: Ring>(l: &LineData<R>, p: &PlaneData<R>) -> Terms<R> {
+    let den = dot3(p.n(), &l.d);
+    let f0 = p.value_at(&l.o);
+    let pnum = [0, 1, 2].map(|i| l.o[i].times(&den).minus(&f0.times(&l.d[i])));
+    let uvnum = match p {
+        PlaneData::Param { o, u, v, .. } => {
+            let w = sub3(&l.o, o);
+            Some([det3(&w, v, &l.d), det3(u, &w, &l.d)])
+        }
+        PlaneData::Implicit { .. } => None,
+    };
+    Terms {
+        den,
+        f0,
+        pnum,
+        uvnum,
+    }
+}
+
+fn in_range<R: Field>(t: &R, range: &Option<[R; 2]>) -> bool {
+    match range {
+        None => true,
+        Some([a, b]) => t.compare(a).is_ge() && t.compare(b).is_le(),
+    }
+}
+
+/// The exact decision procedure, generic over the field (`f64`: plain; `Rational`: exact).
+pub(crate) fn core<R: Field>(l: &LineData<R>, p: &PlaneData<R>) -> LinePlane<R> {
+    let tm = terms(l, p);
+    if tm.den.is_zero() {
+        return if tm.f0.is_zero() {
+            LinePlane::Contained
+        } else {
+            LinePlane::Parallel
+        };
+    }
+    let t = tm.f0.negate().divide(&tm.den);
+    let inside = in_range(&t, &l.range);
+    let [x, y, z] = tm.pnum.map(|q| q.divide(&tm.den));
+    let point = LinePlanePoint {
+        point: Vector3::new(x, y, z),
+        t,
+        uv: tm
+            .uvnum
+            .map(|[u, v]| Vector2::new(u.divide(&tm.den), v.divide(&tm.den))),
+    };
+    if inside {
+        LinePlane::Point(point)
+    } else {
+        LinePlane::OutsideDomain(point)
+    }
+}
+
+/// Plain f64 (uncertified; `N·c' == 0.0` decides parallelism).
+pub fn intersect_line_plane_f64(line: Linear<f64>, plane: &Plane<f64>) -> LinePlane<f64> {
+    core::<f64>(&line.data(), &PlaneData::new(plane))
+}
+
+/// Exact, on rational inputs.
+pub fn intersect_line_plane_exact(
+    line: Linear<Rational>,
+    plane: &Plane<Rational>,
+) -> LinePlane<Rational> {
+    core::<Rational>(&line.data(), &PlaneData::new(plane))
+}
+
+/// Certified: the exact verdict for the double inputs, coordinates correctly rounded
+/// with enclosures. Tiers: the double-double filter (generic input), then rationals.
+pub fn intersect_line_plane(
+    line: Linear<f64>,
+    plane: &Plane<f64>,
+) -> Certified<LinePlane<Rounded>> {
+    if let Some(r) = fast_dispatch(line, plane) {
+        return filter_certified(r);
+    }
+    let l: LineData<Rational> = line.data();
+    let p: PlaneData<Rational> = PlaneData::new(plane);
+    let mut rounder = Rounder::default();
+    let r = core(&l, &p).map(|q| rounder.round(q));
+    rounder.certify(r)
+}
+
+/// Filter constants, as `k·u²`, re-derived by `tests::filter_constants`: each is the
+/// [`crate::num::error_bound::ErrorBound`] bound of the formula in [`terms`] for inputs
+/// bounded by 1, maximised over a line or a segment and a parametric or implicit plane,
+/// rounded up. Derivation of the first (worst case: parametric plane, segment):
+/// `N = u × v`: per component two products (`8u² + 3u²` each) and one subtraction
+/// (`5u²·(1 + 1)`), so `|N_i| ≤ 2`, `e_N = 32u²`; `c' = b − a`: `|c'_i| ≤ 2`,
+/// `e = 10u²`; each product `N_i c'_i`: `(e_N·2 + 10u²·2) + 8u²·4 + 3u² = 119u²`, `|·| ≤ 4`;
+/// two additions (`5u²·8`, `5u²·12`): `3·119u² + 100u² = 457u²`. The others follow the
+/// same rules through `c₀(N·c') − f(c₀)c'` (degree 4) and `det(w, s₂, c')` (degree 3).
+const EPS_DEN: f64 = 458.0 * U * U;
+const EPS_PNUM: f64 = 1966.0 * U * U;
+const EPS_UVNUM: f64 = 990.0 * U * U;
+
+fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "fma")]
+        fn with_fma(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+            fast::<WithFma>(line, plane)
+        }
+        if fma_available() {
+            // SAFETY: the CPU supports FMA (checked at run time).
+            return unsafe { with_fma(line, plane) };
+        }
+        fast::<WithoutFma>(line, plane)
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    {
+        if fma_available() {
+            fast::<WithFma>(line, plane)
+        } else {
+            fast::<WithoutFma>(line, plane)
+        }
+    }
+}
+
+/// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's
+/// origin, an implicit plane's `|d|/m_n`), the line direction `L` (`P` for a segment,
+/// whose direction is `b − a`), the plane vectors `G` (`u`, `v`, or the normal). Degrees
+/// (`k = 2` parametric, `1` implicit): `N·c'`: `G^k L`; point numerators: `P G^k L`;
+/// `(u, v)` numerators: `P G L` over `G² L`.
+#[inline(always)]
+fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+    let (mut mp, ml) = match line {
+        Linear::Line(l) => (
+            group_scale(l.origin().as_slice())?,
+            group_scale(l.dir().as_slice())?,
+        ),
+        Linear::Segment(s) => {
+            let m = group_scale(s.a().as_slice())?.max(group_scale(s.b().as_slice())?);
+            (m, m)
+        }
+    };
+    let (mg, k2) = match plane {
+        Plane::Parametric { origin, u, v } => {
+            mp = mp.max(group_scale(origin.as_slice())?);
+            (
+                group_scale(u.as_slice())?.max(group_scale(v.as_slice())?),
+                true,
+            )
+        }
+        Plane::Implicit { normal, d } => {
+            let mg = group_scale(normal.as_slice())?;
+            mp = extend_scale(Some(mp), *d, mg)?;
+            (mg, false)
+        }
+    };
+    let gk = if k2 { mg * mg } else { mg };
+    let l: LineData<Dd<M>> = line.data();
+    let p: PlaneData<Dd<M>> = PlaneData::new(plane);
+    let tm = terms(&l, &p);
+    let e_den = bound(EPS_DEN, &[gk, ml]);
+    sign_of(&tm.den, e_den)?.is_ne().then_some(())?;
+    let e_pnum = bound(EPS_PNUM, &[mp, gk, ml]);
+    let e_f0 = bound(EPS_PNUM, &[mp, gk]);
+    let t = round_ratio(&tm.f0.negate(), e_f0, &tm.den, e_den)?;
+    let point = [
+        round_ratio(&tm.pnum[0], e_pnum, &tm.den, e_den)?,
+        round_ratio(&tm.pnum[1], e_pnum, &tm.den, e_den)?,
+        round_ratio(&tm.pnum[2], e_pnum, &tm.den, e_den)?,
+    ];
+    let uv = match &tm.uvnum {
+        Some([un, vn]) => {
+            let e_uv = bound(EPS_UVNUM, &[mp, mg, ml]);
+            Some(Vector2::new(
+                round_ratio(un, e_uv, &tm.den, e_den)?,
+                round_ratio(vn, e_uv, &tm.den, e_den)?,
+            ))
+        }
+        None => None,
+    };
+    let inside = match line {
+        Linear::Line(l) => match l.range() {
+            None => true,
+            Some([a, b]) => t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le(),
+        },
+        Linear::Segment(_) => t.compare_f64(0.0).is_ge() && t.compare_f64(1.0).is_le(),
+    };
+    let pt = LinePlanePoint {
+        point: Vector3::from(point),
+        t,
+        uv,
+    };
+    Some(if inside {
+        LinePlane::Point(pt)
+    } else {
+        LinePlane::OutsideDomain(pt)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::error_bound::ErrorBound;
+
+    /// Derive the filter constants from the formulas and check the written ones cover them.
+    #[test]
+    fn filter_constants() {
+        let i = ErrorBound::INPUT;
+        let lines = [
+            LineData {
+                o: [i; 3],
+                d: [i; 3],
+                range: None,
+            },
+            LineData {
+                o: [i; 3],
+                d: [i.minus(&i); 3],
+                range: None,
+            },
+        ];
+        let planes = [
+            PlaneData::Param {
+                o: [i; 3],
+                u: [i; 3],
+                v: [i; 3],
+                n: crate::num::ring::cross3(&[i; 3], &[i; 3]),
+            },
+            PlaneData::Implicit { n: [i; 3], d: i },
+        ];
+        let mut worst = [ErrorBound::zero(); 4];
+        for l in &lines {
+            for p in &planes {
+                let t = terms(l, p);
+                worst[0] = worst[0].max(t.den);
+                worst[1] = worst[1].max(t.pnum[0]).max(t.f0);
+                if let Some([u, v]) = t.uvnum {
+                    worst[2] = worst[2].max(u).max(v);
+                }
+            }
+        }
+        println!("derived (u²): {:?}", worst.map(|w| w.e_in_u2()));
+        for (w, c) in worst.iter().zip([EPS_DEN, EPS_PNUM, EPS_UVNUM]) {
+            assert!(
+                c >= w.e,
+                "constant {} u² below the derived {} u²",
+                c / (U * U),
+                w.e_in_u2()
+            );
+        }
+    }
+}
