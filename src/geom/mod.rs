@@ -13,6 +13,8 @@ pub mod data;
 mod exact_tier;
 pub mod line_plane;
 pub mod objects;
+pub mod plane_plane;
+pub mod three_planes;
 
 pub use data::{Linear, Linear2};
 pub use objects::{Coord, Line, Line2, Plane, Segment, Segment2};

@@ -31,7 +31,7 @@ pub trait Ring: Clone {
 
 /// A ring with division and an exact sign (exact for `Rational`; for `f64` the sign of
 /// the rounded value, which proves nothing).
-pub trait Field: Ring {
+pub trait Field: Ring + nalgebra::Scalar {
     fn divide(&self, rhs: &Self) -> Self;
     fn sign(&self) -> Ordering;
     /// The exact value of a double in this field.
