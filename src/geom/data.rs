@@ -99,10 +99,6 @@ impl<'a, T: Coord> Linear<'a, T> {
             }
         }
     }
-    /// The range ends as given (doubles for `T = f64`), `[0, 1]` for a segment.
-    pub(crate) fn is_segment(&self) -> bool {
-        matches!(self, Linear::Segment(_))
-    }
 }
 
 impl<'a, T: Coord> Linear2<'a, T> {
@@ -127,9 +123,6 @@ impl<'a, T: Coord> Linear2<'a, T> {
                 }
             }
         }
-    }
-    pub(crate) fn is_segment(&self) -> bool {
-        matches!(self, Linear2::Segment(_))
     }
 }
 

@@ -177,7 +177,7 @@ fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Roun
     #[cfg(target_arch = "x86_64")]
     {
         #[target_feature(enable = "fma")]
-        fn with_fma(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+        unsafe fn with_fma(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
             fast::<WithFma>(line, plane)
         }
         if fma_available() {

@@ -12,8 +12,10 @@
 pub mod data;
 mod exact_tier;
 pub mod line_plane;
+pub mod lines2;
 pub mod objects;
 pub mod plane_plane;
+pub mod project;
 pub mod three_planes;
 
 pub use data::{Linear, Linear2};

@@ -21,9 +21,9 @@
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
-use super::data::{Lift, PlaneData};
+use super::data::PlaneData;
 use super::exact_tier::{filter_certified, Rounder};
-use super::objects::{Coord, Plane};
+use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{
@@ -238,7 +238,7 @@ pub(crate) fn dir_exponent(dir: &[Rational]) -> i32 {
 /// Round an exact plane line, scaling its directions (see [`PlaneLine`]).
 pub(crate) fn round_line(l: PlaneLine<Rational>, r: &mut Rounder) -> PlaneLine<Rounded> {
     let k = dir_exponent(l.dir.as_slice());
-    let mut pl = |p: ParamLine<Rational>, r: &mut Rounder| ParamLine {
+    let pl = |p: ParamLine<Rational>, r: &mut Rounder| ParamLine {
         origin: p.origin.map(|x| r.round(x)),
         dir: p.dir.map(|x| r.round_scaled(x, k)),
     };
@@ -295,7 +295,7 @@ fn fast_dispatch(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
     #[cfg(target_arch = "x86_64")]
     {
         #[target_feature(enable = "fma")]
-        fn with_fma(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
+        unsafe fn with_fma(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
             fast::<WithFma>(a, b)
         }
         if fma_available() {

@@ -203,7 +203,7 @@ fn fast_dispatch(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     #[cfg(target_arch = "x86_64")]
     {
         #[target_feature(enable = "fma")]
-        fn with_fma(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
+        unsafe fn with_fma(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
             fast::<WithFma>(p)
         }
         if fma_available() {

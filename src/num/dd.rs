@@ -31,7 +31,7 @@ use super::ring::Ring;
 /// u = 2⁻⁵³, the unit roundoff of binary64.
 pub const U: f64 = f64::EPSILON / 2.0;
 /// η = 2⁻¹⁰⁷⁴, the smallest subnormal: the absolute error of an underflowing product.
-pub const ETA: f64 = 4.9406564584124654e-324;
+pub const ETA: f64 = 5e-324;
 
 /// How a double product is made error-free: with a fused multiply-add or with
 /// Dekker's algorithm. A type parameter so that each instantiation is compiled

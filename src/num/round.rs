@@ -45,11 +45,11 @@ impl Rounded {
             Ordering::Greater => Rounded {
                 nearest: x,
                 lo: x,
-                hi: x.next_up(),
+                hi: next_up(x),
             },
             Ordering::Less => Rounded {
                 nearest: x,
-                lo: x.next_down(),
+                lo: next_down(x),
                 hi: x,
             },
             Ordering::Equal => Rounded::exact(x),
@@ -85,6 +85,23 @@ impl Rounded {
     pub fn sign(&self) -> Ordering {
         self.compare_f64(0.0)
     }
+}
+
+/// The next double above `x` (`f64::next_up`, written out for the crate's MSRV 1.80).
+pub fn next_up(x: f64) -> f64 {
+    if x.is_nan() || x == f64::INFINITY {
+        return x;
+    }
+    if x == 0.0 {
+        return f64::from_bits(1);
+    }
+    let b = x.to_bits();
+    f64::from_bits(if x > 0.0 { b + 1 } else { b - 1 })
+}
+
+/// The next double below `x`.
+pub fn next_down(x: f64) -> f64 {
+    -next_up(-x)
 }
 
 /// Round an exact rational to the nearest double, with its enclosure.
@@ -179,7 +196,7 @@ pub fn sqrt_rational(q: &Rational) -> Rounded {
             if Rational::from_f64(a).map(|r| Rational::from(&r * &r) == *q) == Some(true) {
                 return Rounded::exact(a);
             }
-        } else if b == a.next_up() {
+        } else if b == next_up(a) {
             // The root may be the midpoint m of a and b: then it is a tie.
             let m = (Rational::from_f64(a).unwrap_or_default()
                 + Rational::from_f64(b).unwrap_or_default())
@@ -258,6 +275,17 @@ mod tests {
         // 2/3 = (2/√6)²: §16.2's distance.
         let r = sqrt_rational(&Rational::from((2, 3)));
         assert_eq!(r.nearest, 0.816496580927726);
+    }
+
+    #[test]
+    fn neighbours() {
+        assert_eq!(next_up(1.0), 1.0 + f64::EPSILON);
+        assert_eq!(next_down(1.0), 1.0 - f64::EPSILON / 2.0);
+        assert_eq!(next_up(-0.0), f64::from_bits(1));
+        assert_eq!(next_down(0.0), -f64::from_bits(1));
+        assert_eq!(next_up(-f64::from_bits(1)), 0.0);
+        assert_eq!(next_up(f64::MAX), f64::INFINITY);
+        assert_eq!(next_down(f64::NEG_INFINITY), f64::NEG_INFINITY);
     }
 
     #[test]
