@@ -63,18 +63,32 @@ pub(crate) struct Line2Data<R> {
 }
 
 /// A 3D linear object with a parameter: a line (maybe ranged) or a segment.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug)]
 pub enum Linear<'a, T: Coord> {
     Line(&'a Line<T>),
     Segment(&'a Segment<T>),
 }
 
 /// A 2D linear object with a parameter.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug)]
 pub enum Linear2<'a, T: Coord> {
     Line(&'a Line2<T>),
     Segment(&'a Segment2<T>),
 }
+
+// Copy for every coordinate type (the enums only hold references).
+impl<T: Coord> Clone for Linear<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T: Coord> Copy for Linear<'_, T> {}
+impl<T: Coord> Clone for Linear2<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T: Coord> Copy for Linear2<'_, T> {}
 
 impl<'a, T: Coord> Linear<'a, T> {
     #[inline(always)]

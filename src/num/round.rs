@@ -8,9 +8,10 @@
 //! `lo < value < hi` with `lo`, `hi` adjacent doubles (open interval).
 //!
 //! Conversions from `rug::Rational` go through MPFR (`rug::Float`) at 53 bits, rounded to
-//! nearest, followed by `subnormalize_ieee_round`, which re-rounds values in the subnormal
-//! range using the first rounding's ternary value, so there is no double rounding.
-//! (rug 1.19's `Rational::to_f64` truncates towards zero; it is never used for results.)
+//! nearest, in the normal range (where doubles have exactly 53 bits), and through integer
+//! rounding of `x·2¹⁰⁷⁴` below it. (rug 1.19's `Rational::to_f64` truncates towards zero,
+//! and its `subnormalize_ieee_round` ignores values below the smallest subnormal; neither
+//! is used for results.)
 
 use rug::float::Round;
 use rug::{Float, Rational};
@@ -109,12 +110,42 @@ pub fn round_rational(x: &Rational) -> Rounded {
     if x.cmp0() == Ordering::Equal {
         return Rounded::exact(0.0);
     }
-    let (mut f, first) = Float::with_val_round(53, x, Round::Nearest);
-    let dir = f.subnormalize_ieee_round(first, Round::Nearest);
+    let min_normal = Rational::from_f64(f64::MIN_POSITIVE).unwrap_or_default();
+    if Rational::from(x.abs_ref()) < min_normal {
+        return round_subnormal(x);
+    }
+    let (f, dir) = Float::with_val_round(53, x, Round::Nearest);
     from_rounded_float(&f, dir)
 }
 
-/// Build a [`Rounded`] from a 53-bit MPFR float already subnormalized, whose ternary
+/// Below 2⁻¹⁰²² the doubles are the multiples of 2⁻¹⁰⁷⁴: round `x·2¹⁰⁷⁴` to the nearest
+/// integer, ties to even, in integers. (MPFR's `subnormalize` through rug 1.19 leaves
+/// values below the smallest subnormal untouched, so it is not used.)
+fn round_subnormal(x: &Rational) -> Rounded {
+    let y = Rational::from(x << 1074u32);
+    let (fl, frac) = {
+        let f = Rational::from(y.floor_ref());
+        let r = Rational::from(&y - &f);
+        (f, r)
+    };
+    let half = Rational::from((1, 2));
+    let k = match frac.cmp(&half) {
+        Ordering::Less => fl.clone(),
+        Ordering::Greater => fl.clone() + 1u32,
+        Ordering::Equal => {
+            if fl.numer().is_even() {
+                fl.clone()
+            } else {
+                fl.clone() + 1u32
+            }
+        }
+    };
+    let c = k.to_f64() * f64::from_bits(1); // |k| ≤ 2^52: both steps exact
+    let side = y.cmp(&k);
+    Rounded::inexact(c, side)
+}
+
+/// Build a [`Rounded`] from a 53-bit MPFR float in the normal range, whose ternary
 /// value `dir` compares it with the exact value.
 fn from_rounded_float(f: &Float, dir: Ordering) -> Rounded {
     // 2^1024: the first power of two beyond the double range.
@@ -216,9 +247,18 @@ pub fn sqrt_rational(q: &Rational) -> Rounded {
 
 /// Round an MPFR float to the nearest double (IEEE subnormals and overflow included).
 fn round_float_to_f64(x: &Float) -> (f64, Ordering) {
-    let (mut f, first) = Float::with_val_round(53, x, Round::Nearest);
-    let dir = f.subnormalize_ieee_round(first, Round::Nearest);
-    (f.to_f64(), dir)
+    let r = x
+        .to_rational()
+        .map(|q| round_rational(&q))
+        .unwrap_or(Rounded::exact(f64::NAN));
+    let dir = if r.is_exact() {
+        Ordering::Equal
+    } else if r.lo == r.nearest {
+        Ordering::Less
+    } else {
+        Ordering::Greater
+    };
+    (r.nearest, dir)
 }
 
 #[cfg(test)]
@@ -254,6 +294,19 @@ mod tests {
         let r = round_rational(&Rational::from(&tiny / 3u32));
         assert_eq!(r.nearest, 0.0);
         assert_eq!((r.lo, r.hi), (0.0, f64::from_bits(1)));
+        let r = round_rational(&Rational::from(&tiny / -1024i32));
+        assert_eq!((r.nearest, r.lo, r.hi), (0.0, -f64::from_bits(1), 0.0));
+        // 0.5 · 2^-1074 is a tie between 0 (even) and 2^-1074.
+        let r = round_rational(&Rational::from(&tiny / 2u32));
+        assert_eq!((r.nearest, r.lo, r.hi), (0.0, 0.0, f64::from_bits(1)));
+        let r = round_rational(&(Rational::from(&tiny * 3u32) / 4u32));
+        assert_eq!(
+            (r.nearest, r.lo, r.hi),
+            (f64::from_bits(1), 0.0, f64::from_bits(1))
+        );
+        // just below 2^-1022 rounds up to it
+        let below = Rational::from_f64(f64::MIN_POSITIVE).unwrap() - Rational::from(&tiny / 4u32);
+        assert_eq!(round_rational(&below).nearest, f64::MIN_POSITIVE);
         let max = Rational::from_f64(f64::MAX).unwrap();
         let r = round_rational(&Rational::from(&max * 2u32));
         assert!(r.overflowed() && r.lo == f64::MAX);
