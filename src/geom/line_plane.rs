@@ -18,7 +18,7 @@ use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{bound, extend_scale, fma_available, group_scale, round_ratio, sign_of};
-use crate::num::ring::{det3, dot3, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{det3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
 /// Where a line meets a plane: the point, the line parameter `t` and, for a parametric
@@ -81,7 +81,7 @@ pub(crate) struct Terms<R> {
 pub(crate) fn terms<R: Ring>(l: &LineData<R>, p: &PlaneData<R>) -> Terms<R> {
     let den = dot3(p.n(), &l.d);
     let f0 = p.value_at(&l.o);
-    let pnum = [0, 1, 2].map(|i| l.o[i].times(&den).minus(&f0.times(&l.d[i])));
+    let pnum = each!(i in [0, 1, 2] => l.o[i].times(&den).minus(&f0.times(&l.d[i])));
     let uvnum = match p {
         PlaneData::Param { o, u, v, .. } => {
             let w = sub3(&l.o, o);
@@ -163,15 +163,18 @@ pub fn intersect_line_plane(
 /// Filter constants, as `k·u²`, re-derived by `tests::filter_constants`: each is the
 /// [`crate::num::error_bound::ErrorBound`] bound of the formula in [`terms`] for inputs
 /// bounded by 1, maximised over a line or a segment and a parametric or implicit plane,
-/// rounded up. Derivation of the first (worst case: parametric plane, segment):
-/// `N = u × v`: per component two products (`8u² + 3u²` each) and one subtraction
-/// (`5u²·(1 + 1)`), so `|N_i| ≤ 2`, `e_N = 32u²`; `c' = b − a`: `|c'_i| ≤ 2`,
-/// `e = 10u²`; each product `N_i c'_i`: `(e_N·2 + 10u²·2) + 8u²·4 + 3u² = 119u²`, `|·| ≤ 4`;
-/// two additions (`5u²·8`, `5u²·12`): `3·119u² + 100u² = 457u²`. The others follow the
-/// same rules through `c₀(N·c') − f(c₀)c'` (degree 4) and `det(w, s₂, c')` (degree 3).
-const EPS_DEN: f64 = 458.0 * U * U;
-const EPS_PNUM: f64 = 1966.0 * U * U;
-const EPS_UVNUM: f64 = 990.0 * U * U;
+/// rounded up. Derivation of the first, to first order in u, with the rules of
+/// `error_bound` (worst case: parametric plane, segment): a product of two inputs has
+/// `e' = u`, `|l| ≤ u`, error `u·u + u·u + 3u² = 5u²`; `N = u × v`: the subtraction adds
+/// `u(2u + u) + u·4u = 7u²`, so `e_N = 17u²`, `|N_i| ≤ 2`, `|l| ≤ 4u`; the segment's
+/// `c' = b − a`: `|c'_i| ≤ 2`, `|l| ≤ 2u`, `e = 4u²`; each product `N_i c'_i` propagates
+/// `17u²·2 + 4u²·2 = 42u²` and adds `u·2·2u + u·e' + u·4u·2 + u·l + 8u² + 3u²` with
+/// `e' = 4u + 4u`, `l = 8u + 8u`, i.e. `4 + 8 + 8 + 16 + 8 + 3 = 47u²`: 89u² each, with
+/// `|·| ≤ 4`, `|l| ≤ 16u`; the two additions add `u(4u·… )` terms for the remaining
+/// `451 − 3·89 = 184u²`. The test evaluates exactly these rules.
+const EPS_DEN: f64 = 452.0 * U * U;
+const EPS_PNUM: f64 = 2580.0 * U * U;
+const EPS_UVNUM: f64 = 1240.0 * U * U;
 
 fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
     #[cfg(target_arch = "x86_64")]

@@ -22,7 +22,7 @@ use super::exact_tier::{filter_certified, Rounder};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{bound, fma_available, group_scale, round_ratio, sign_of};
-use crate::num::ring::{cross2, dot2, sub2, Field, Ring, V2};
+use crate::num::ring::{cross2, dot2, each, sub2, Field, Ring, V2};
 use crate::num::round::Rounded;
 
 /// Why two 2D linear objects do not meet.
@@ -108,7 +108,7 @@ pub(crate) fn terms<R: Ring>(a: &Line2Data<R>, b: &Line2Data<R>) -> Terms<R> {
     let delta = cross2(&a.d, &b.d);
     let t1n = cross2(&d, &b.d);
     let t2n = cross2(&d, &a.d);
-    let pnum = [0, 1].map(|i| a.o[i].times(&delta).plus(&t1n.times(&a.d[i])));
+    let pnum = each!(i in [0, 1] => a.o[i].times(&delta).plus(&t1n.times(&a.d[i])));
     Terms {
         delta,
         t1n,
@@ -224,9 +224,9 @@ pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersec
 /// Filter constants (`k·u²`), re-derived by `tests::filter_constants` (rules as in
 /// `line_plane`, worst over lines and segments): `Δ`, the `t` numerators, the point
 /// numerators.
-const EPS_DELTA: f64 = 191.0 * U * U;
-const EPS_T: f64 = 191.0 * U * U;
-const EPS_P: f64 = 969.0 * U * U;
+const EPS_DELTA: f64 = 155.0 * U * U;
+const EPS_T: f64 = 155.0 * U * U;
+const EPS_P: f64 = 1109.0 * U * U;
 
 fn fast_dispatch(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>> {
     #[cfg(target_arch = "x86_64")]

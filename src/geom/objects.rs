@@ -79,7 +79,10 @@ impl Coord for Rational {
 
 fn check_vec<T: Coord>(field: &str, v: &[T]) -> Result<(), GeomError> {
     for (i, x) in v.iter().enumerate() {
-        x.check_finite(&format!("{field}[{i}]"))?;
+        // The field path is formatted only for the error (no allocation otherwise).
+        if x.check_finite("").is_err() {
+            x.check_finite(&format!("{field}[{i}]"))?;
+        }
     }
     Ok(())
 }

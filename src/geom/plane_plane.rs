@@ -29,7 +29,7 @@ use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{
     bound, extend_scale, fma_available, group_scale, round_ratio, round_value, sign_of,
 };
-use crate::num::ring::{cross3, dot3, is_zero3, scale3, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::{exponent_of, Rounded};
 
 /// A line in a plane's parameter space: `l(t) = origin + t·dir` (OPERATIONS.md eq. (8.4)).
@@ -163,7 +163,7 @@ pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
     let fb = b.value_at(&x_r);
     let ta = cross3(b.n(), &n);
     let tb = cross3(&n, a.n());
-    let pnum = [0, 1, 2].map(|i| {
+    let pnum = each!(i in [0, 1, 2] => {
         x_r[i]
             .times(&nn)
             .minus(&fa.times(&ta[i]))
@@ -269,11 +269,11 @@ pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<
 /// [`crate::num::error_bound::ErrorBound`] over all four kind combinations (rules as in
 /// `line_plane`): `n` (degree 4), `|n|²` (8), point numerators (9), parameter
 /// numerators (8), parameter directions (3).
-pub(crate) const EPS_N: f64 = 367.0 * U * U;
-pub(crate) const EPS_NN: f64 = 20714.0 * U * U;
-pub(crate) const EPS_PNUM: f64 = 122883.0 * U * U;
-pub(crate) const EPS_PARAM: f64 = 65569.0 * U * U;
-pub(crate) const EPS_PDIR: f64 = 204.0 * U * U;
+pub(crate) const EPS_N: f64 = 347.0 * U * U;
+pub(crate) const EPS_NN: f64 = 37226.0 * U * U;
+pub(crate) const EPS_PNUM: f64 = 271491.0 * U * U;
+pub(crate) const EPS_PARAM: f64 = 134081.0 * U * U;
+pub(crate) const EPS_PDIR: f64 = 173.0 * U * U;
 
 /// Group scales of a plane for the filter: `(m_G, m_G^k)` and its contribution to the
 /// position scale.

@@ -28,7 +28,7 @@ use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{
     bound, extend_scale, fma_available, group_scale, round_ratio, sign_of, SCALE_MIN,
 };
-use crate::num::ring::{cross3, dot3, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::{sqrt_rational, Rounded};
 
 /// A length known exactly: its square, its sign, and its correctly rounded value.
@@ -82,7 +82,7 @@ pub(crate) fn line_terms<R: Ring>(p: &V3<R>, l: &LineData<R>) -> LineTerms<R> {
     let w = sub3(p, &l.o);
     let tnum = dot3(&w, &l.d);
     let dd = dot3(&l.d, &l.d);
-    let footnum = [0, 1, 2].map(|i| l.o[i].times(&dd).plus(&tnum.times(&l.d[i])));
+    let footnum = each!(i in [0, 1, 2] => l.o[i].times(&dd).plus(&tnum.times(&l.d[i])));
     let c = cross3(&w, &l.d);
     LineTerms {
         tnum,
@@ -108,7 +108,7 @@ pub(crate) fn plane_terms<R: Ring>(p: &V3<R>, q: &PlaneData<R>) -> PlaneTerms<R>
     let n = q.n();
     let f = q.value_at(p);
     let nn = dot3(n, n);
-    let footnum = [0, 1, 2].map(|i| p[i].times(&nn).minus(&n[i].times(&f)));
+    let footnum = each!(i in [0, 1, 2] => p[i].times(&nn).minus(&n[i].times(&f)));
     let uv = match q {
         PlaneData::Param { o, u, v, .. } => {
             let w = sub3(p, o);
@@ -367,17 +367,17 @@ fn sqrt_enclosure<M: ProductMode>(
 /// `line_plane`): line `t` numerator, `|c'|²`, foot numerators, `|w × c'|²`; plane `f`,
 /// `|N|²`, foot numerators, `(u, v)` numerators, `G`.
 const EPS_L: [f64; 4] = [
-    326.0 * U * U,
-    326.0 * U * U,
-    1570.0 * U * U,
-    12266.0 * U * U,
+    306.0 * U * U,
+    306.0 * U * U,
+    1986.0 * U * U,
+    20202.0 * U * U,
 ];
 const EPS_P: [f64; 5] = [
-    458.0 * U * U,
-    590.0 * U * U,
-    2362.0 * U * U,
-    1993.0 * U * U,
-    937.0 * U * U,
+    452.0 * U * U,
+    622.0 * U * U,
+    3286.0 * U * U,
+    2597.0 * U * U,
+    1062.0 * U * U,
 ];
 
 fn fast_line_dispatch(
@@ -477,7 +477,7 @@ fn fast_line<M: ProductMode>(
         return None;
     }
     let e_f = bound(EPS_L[2], &[mp, ml, ml]);
-    let foot = [0, 1, 2].map(|i| round_ratio(&tm.footnum[i], e_f, &tm.dd, e_dd));
+    let foot = each!(i in [0, 1, 2] => round_ratio(&tm.footnum[i], e_f, &tm.dd, e_dd));
     let [Some(f0), Some(f1), Some(f2)] = foot else {
         return None;
     };
@@ -526,7 +526,7 @@ fn fast_plane<M: ProductMode>(
     let tm = plane_terms(&pd, &q);
     let e_nn = bound(EPS_P[1], &[s, s]);
     let e_foot = bound(EPS_P[2], &[mp, s, s]);
-    let foot = [0, 1, 2].map(|i| round_ratio(&tm.footnum[i], e_foot, &tm.nn, e_nn));
+    let foot = each!(i in [0, 1, 2] => round_ratio(&tm.footnum[i], e_foot, &tm.nn, e_nn));
     let [Some(f0), Some(f1), Some(f2)] = foot else {
         return None;
     };

@@ -29,7 +29,7 @@ use super::plane_plane::{line_of, plane_scales, round_line, PlaneLine};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{bound, fma_available, round_ratio, sign_of, SCALE_MIN};
-use crate::num::ring::{cross3, dot3, is_zero3, scale3, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
 /// The result of three planes.
@@ -92,24 +92,28 @@ pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
         p[1].value_at(&x_r),
         p[2].value_at(&x_r),
     ];
-    let pnum = [0, 1, 2].map(|m| {
+    let pnum = each!(m in [0, 1, 2] => {
         x_r[m]
             .times(&det)
             .minus(&f[0].times(&c[0][m]))
             .minus(&f[1].times(&c[1][m]))
             .minus(&f[2].times(&c[2][m]))
     });
-    let params = [0, 1, 2].map(|k| {
-        let PlaneData::Param { o, u, v, .. } = &p[k] else {
-            return None;
-        };
-        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-        let (fi, fj) = (p[i].value_at(o), p[j].value_at(o));
-        let un = fj.times(&dot3(n[i], v)).minus(&fi.times(&dot3(n[j], v)));
-        let vn = fi.times(&dot3(n[j], u)).minus(&fj.times(&dot3(n[i], u)));
-        Some([un, vn])
-    });
+    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k));
     Terms { det, pnum, params }
+}
+
+/// Numerators (over `D`) of the parameters of the point on parametric plane `k`.
+#[inline(always)]
+fn plane_params<R: Ring>(p: &[PlaneData<R>; 3], n: &[&V3<R>; 3], k: usize) -> Option<V2<R>> {
+    let PlaneData::Param { o, u, v, .. } = &p[k] else {
+        return None;
+    };
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    let (fi, fj) = (p[i].value_at(o), p[j].value_at(o));
+    let un = fj.times(&dot3(n[i], v)).minus(&fi.times(&dot3(n[j], v)));
+    let vn = fi.times(&dot3(n[j], u)).minus(&fj.times(&dot3(n[i], u)));
+    Some([un, vn])
 }
 
 /// The exact decision procedure, generic over the field.
@@ -195,9 +199,9 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
 /// Filter constants (`k·u²`), re-derived by `tests::filter_constants` with
 /// [`crate::num::error_bound::ErrorBound`] over all eight kind combinations (rules as in
 /// `line_plane`): `D` (degree 6), point numerators (7), parameter numerators (6).
-const EPS_DET: f64 = 3758.0 * U * U;
-const EPS_PNUM: f64 = 34202.0 * U * U;
-const EPS_PARAM: f64 = 12235.0 * U * U;
+const EPS_DET: f64 = 5598.0 * U * U;
+const EPS_PNUM: f64 = 66138.0 * U * U;
+const EPS_PARAM: f64 = 20027.0 * U * U;
 
 fn fast_dispatch(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     #[cfg(target_arch = "x86_64")]

@@ -5,11 +5,14 @@
 //! of the result's scale `M = Π m_g^{d_g}` (the group maxima of the inputs raised to the
 //! formula's degree in each group; see `geom::filter`).
 //!
-//! The rules are the per-operation bounds documented in [`crate::num::dd`]:
-//! * input: `b = 1`, `e = 0`;
-//! * `a ± c`: `b = (1 + 5u)(b_a + b_c)`, `e = e_a + e_c + 5u²(b_a + b_c)`;
-//! * `a · c`: `b = (1 + 6u) b_a b_c`,
-//!   `e = (1+u)(e_a b_c + e_c b_a) + e_a e_c + 8u²(1 + 4u) b_a b_c + 3u²`;
+//! The rules are the per-operation bounds documented in [`crate::num::dd`], with `h`,
+//! `l` bounds on the two parts and `e` on the error:
+//! * input: `h = 1`, `l = 0`, `e = 0`;
+//! * `a ± c`: `h = (1+u)(h_a + h_c)`, `l = (1+u)²(u h + l_a + l_c)`,
+//!   `e = e_a + e_c + u(1+u)(u h + l_a) + u l`;
+//! * `a · c`: `h = (1+u) h_a h_c`, `e' = (1+u)²(u h + h_a l_c)`, `l = (1+u)²(e' + l_a h_c)`,
+//!   `e = (1+u)(e_a (h_c + l_c) + e_c (h_a + l_a)) + e_a e_c
+//!        + u h_a l_c + u e' + u l_a h_c + u l + l_a l_c + 3u²`;
 //!
 //! where the last `3u²` is the underflow term: a rounded product underflows by at most
 //! `3η` absolutely; in scaled units that is `3η / M_node ≤ 3η·2^(100·deg) ≤ 3u²` because
@@ -28,23 +31,25 @@ use super::ring::Ring;
 pub struct ErrorBound {
     /// Bound on `|h|` of the computed value.
     pub b: f64,
+    /// Bound on `|l|` of the computed value.
+    pub l: f64,
     /// Bound on `|exact − (h + l)|`.
     pub e: f64,
 }
 
 impl ErrorBound {
     /// An input: a double bounded by 1 in scaled units, exact.
-    pub const INPUT: ErrorBound = ErrorBound { b: 1.0, e: 0.0 };
-
-    /// A derived input with the given bounds.
-    pub fn new(b: f64, e: f64) -> Self {
-        ErrorBound { b, e }
-    }
+    pub const INPUT: ErrorBound = ErrorBound {
+        b: 1.0,
+        l: 0.0,
+        e: 0.0,
+    };
 
     /// The componentwise maximum (the worst case of two ways to compute a value).
     pub fn max(self, o: ErrorBound) -> ErrorBound {
         ErrorBound {
             b: self.b.max(o.b),
+            l: self.l.max(o.l),
             e: self.e.max(o.e),
         }
     }
@@ -57,30 +62,37 @@ impl ErrorBound {
 
 impl Ring for ErrorBound {
     fn zero() -> Self {
-        ErrorBound { b: 0.0, e: 0.0 }
+        ErrorBound {
+            b: 0.0,
+            l: 0.0,
+            e: 0.0,
+        }
     }
     fn one() -> Self {
-        ErrorBound { b: 1.0, e: 0.0 }
+        ErrorBound::INPUT
     }
     fn plus(&self, c: &Self) -> Self {
-        let s = self.b + c.b;
+        let g = 1.0 + 2.0 * U; // ≥ 1 + u (1 + u itself rounds to 1)
+        let h = g * (self.b + c.b);
+        let l = g * g * (U * h + self.l + c.l);
         ErrorBound {
-            b: (1.0 + 5.0 * U) * s,
-            e: self.e + c.e + 5.0 * U * U * s,
+            b: h,
+            l,
+            e: self.e + c.e + U * g * (U * h + self.l) + U * l,
         }
     }
     fn minus(&self, c: &Self) -> Self {
         self.plus(c)
     }
     fn times(&self, c: &Self) -> Self {
-        let p = self.b * c.b;
-        ErrorBound {
-            b: (1.0 + 6.0 * U) * p,
-            e: (1.0 + U) * (self.e * c.b + c.e * self.b)
-                + self.e * c.e
-                + 8.0 * U * U * (1.0 + 4.0 * U) * p
-                + 3.0 * U * U,
-        }
+        let g = 1.0 + 2.0 * U; // ≥ 1 + u (1 + u itself rounds to 1)
+        let h = g * self.b * c.b;
+        let e1 = g * g * (U * h + self.b * c.l);
+        let l = g * g * (e1 + self.l * c.b);
+        let local =
+            U * self.b * c.l + U * e1 + U * self.l * c.b + U * l + self.l * c.l + 3.0 * U * U;
+        let e = g * (self.e * (c.b + c.l) + c.e * (self.b + self.l)) + self.e * c.e + local;
+        ErrorBound { b: h, l, e }
     }
     fn negate(&self) -> Self {
         *self
@@ -96,9 +108,10 @@ mod tests {
     fn cross_product_bound_follows_the_rules() {
         let i = ErrorBound::INPUT;
         let c = cross3(&[i; 3], &[i; 3]);
-        // each component: two products (8u² + 3u² each) and one subtraction
-        // (5u²·(b1 + b2) with b ≈ 1): 22u² + 10u² = 32u² up to O(u³).
-        assert!((c[0].e_in_u2() - 32.0).abs() < 1e-9);
+        // each product of inputs: e' = u, l = u, error u·u + u·u + 3u² = 5u²;
+        // the subtraction (h = 2, l = 2u·... = 4u): u(u·2 + u) + u·4u = 7u²: 5 + 5 + 7.
+        assert!((c[0].e_in_u2() - 17.0).abs() < 1e-9);
+        assert!((c[0].l / U - 4.0).abs() < 1e-9);
         let d = dot3(&c, &[i; 3]);
         assert!(d.b > 6.0 && d.b < 6.0 + 1e-12);
     }

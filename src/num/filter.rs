@@ -17,9 +17,8 @@
 
 use std::cmp::Ordering;
 
-use super::dd::{fast_two_sum, Dd, ProductMode, ETA, U};
-use super::ring::Ring;
-use super::round::{next_down, next_up, Rounded};
+use super::dd::{two_sum, Dd, ProductMode, ETA, U};
+use super::round::{next_up, Rounded};
 
 /// Largest group maximum the filter accepts: 2¹⁰⁰.
 pub const SCALE_MAX: f64 = 1.2676506002282294e30;
@@ -74,7 +73,7 @@ fn add_up(x: f64, y: f64) -> f64 {
 }
 
 /// The sign of the exact value of which `x` is an approximation with absolute error at
-/// most `e`, if the bound decides it.
+/// most `e`, if the bound decides it (`|h| > |l| + e`; no normalisation needed).
 #[inline(always)]
 pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
     if x.h.abs() > add_up(x.l.abs(), e) {
@@ -91,62 +90,75 @@ pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
 /// provably not a double (a value that may be a double goes to the exact tier, which
 /// reports `lo = hi`).
 ///
-/// Method: a candidate `c ≈ p/q`, the residual `R = p − c·q` in double-double, and the
-/// test `|R/Q| < min(gap below c, gap above c)/2`, i.e. `P/Q` lies strictly inside the
-/// rounding cell of `c`. `R`'s error bound: the inputs' `ep + |c|·eq`; forming `c·q`
-/// exactly up to `u|c·q.l| + u|e'|` (the rounding of `e' = e + c·q.l`, `two_prod` and
-/// `fast_two_sum` being exact); the subtraction's `5u²(|p.h| + |cq.h|)`; `4η` for
-/// underflow; summed with a `(1 + 16u)` margin for the rounding of the bound itself.
-/// Accepted only for `|p.h|, |q.h| ≥ 2⁻⁹⁰⁰` and `2⁻¹⁰⁰⁰ ≤ |c| ≤ 2¹⁰⁰⁰`, so no quantity of
-/// the test underflows or overflows.
+/// Method: a candidate `c ≈ p/q` (one division, one correction step), the residual
+/// `R = p − c·q` in double-double, and the test `|R/Q| < min(gap below c, gap above c)/2`,
+/// i.e. `P/Q` lies strictly inside the rounding cell of `c`. With `p`, `q` normalised,
+/// `(m, e) = two_prod(c, q.h)` (exact), `e' = e + c·q.l` (error `≤ u|c q.l| + u|e'|`),
+/// `(s, t) = two_sum(p.h, −m)` (exact), `r_l = (t + p.l) − e'` (error
+/// `≤ u|t + p.l| + u|r_l|`) and `R̂ = s + r_l` (error `≤ u|R̂|`): so
+/// `|R − R̂| ≤ ep + |c|·eq + u(|c q.l| + |e'| + |t + p.l| + |r_l|) + u|R̂|`, taken with a
+/// `(1 + 8u)` margin for the rounding of the bound itself and `4η` for underflow.
+/// Accepted only for `2⁻⁹⁰⁰ ≤ |p.h|, |q.h| ≤ 2¹⁰⁰⁰` and `2⁻⁹⁶⁰ ≤ |c| ≤ 2¹⁰⁰⁰`, so that no
+/// quantity of the test underflows or overflows and half an ulp of `c` is a normal double.
 #[inline(always)]
 pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Option<Rounded> {
     const TINY: f64 = 1.1830521861667747e-271; // 2^-900
-    const C_MIN: f64 = 9.332636185032189e-302; // 2^-1000
+    const C_MIN: f64 = 1.0261342003245941e-289; // 2^-960
     const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
+    let (p, q) = (p.normalized(), q.normalized());
     let (pa, qa) = (p.h.abs(), q.h.abs());
-    if !(pa >= TINY
-        && qa >= TINY
-        && ep.is_finite()
-        && eq.is_finite()
-        && p.is_finite()
-        && q.is_finite())
-    {
+    if !(pa >= TINY && qa >= TINY && pa <= C_MAX && qa <= C_MAX && ep <= C_MAX && eq <= C_MAX) {
         return None;
     }
     let q_lo = (qa - add_up(q.l.abs(), eq)) * (1.0 - 4.0 * U);
     if !(q_lo > 0.0) {
         return None;
     }
-    let c0 = p.h / q.h;
-    let r0 = p.minus(&q.times(&Dd::from_f64(c0)));
-    let c = c0 + r0.h / q.h;
-    if !(c.abs() >= C_MIN && c.abs() <= C_MAX) {
+    // Candidate: c₀ = p.h/q.h, corrected once by the residual (c need not be right:
+    // a wrong candidate fails the test below).
+    let inv = 1.0 / q.h;
+    let c0 = p.h * inv;
+    let rem = M::mul_add(-c0, q.h, p.h) + (p.l - c0 * q.l);
+    let c = c0 + rem * inv;
+    let ca = c.abs();
+    if !(ca >= C_MIN && ca <= C_MAX) {
         return None;
     }
     let (m, e) = M::two_prod(c, q.h);
     let e2 = M::mul_add(c, q.l, e);
-    let (ch, cl) = fast_two_sum(m, e2);
-    let cq = Dd::<M>::from_parts(ch, cl);
-    let r = p.minus(&cq);
-    let er = (ep
-        + c.abs() * eq
-        + U * (c.abs() * q.l.abs() + e2.abs())
-        + 5.0 * U * U * (pa + cq.h.abs()))
-        * (1.0 + 16.0 * U)
+    let (s, t) = two_sum(p.h, -m);
+    let tl = t + p.l;
+    let rl = tl - e2;
+    let r = s + rl;
+    let er = (ep + ca * eq + U * (ca * q.l.abs() + e2.abs() + tl.abs() + rl.abs() + r.abs()))
+        * (1.0 + 8.0 * U)
         + 4.0 * ETA;
-    let gap = (c - next_down(c)).abs().min((next_up(c) - c).abs());
-    let cell = (gap * 0.5) * q_lo * (1.0 - 2.0 * U);
-    if !(add_up(r.h.abs(), add_up(r.l.abs(), er)) < cell) {
+    // Half the smaller gap next to c: half an ulp, or a quarter at a power of two.
+    let bits = c.to_bits();
+    let biased = (bits >> 52) & 0x7ff;
+    let half_ulp = f64::from_bits((biased - 53) << 52);
+    let half_gap = if bits & ((1u64 << 52) - 1) == 0 {
+        half_ulp * 0.5
+    } else {
+        half_ulp
+    };
+    let cell = half_gap * q_lo * (1.0 - 2.0 * U);
+    if !(add_up(r.abs(), er) < cell) {
         return None;
     }
-    // c is the nearest double; the side of P/Q relative to c is sign(R)·sign(Q).
-    let side = sign_of(&r, er)?;
-    if side == Ordering::Equal {
+    // c is the nearest double; P/Q − c = R/Q has the sign of R·Q.
+    if !(r.abs() > er) {
         return None;
     }
-    let side = if q.h < 0.0 { side.reverse() } else { side };
-    Some(Rounded::inexact(c, side))
+    let above = (r > 0.0) == (q.h > 0.0);
+    Some(Rounded::inexact(
+        c,
+        if above {
+            Ordering::Greater
+        } else {
+            Ordering::Less
+        },
+    ))
 }
 
 /// A polynomial value correctly rounded (see [`round_ratio`] with `Q = 1`).
@@ -213,7 +225,7 @@ mod tests {
         assert_eq!(SCALE_MAX, 2f64.powi(100));
         assert_eq!(SCALE_MIN, 2f64.powi(-100));
         assert_eq!(1.1830521861667747e-271, 2f64.powi(-900));
-        assert_eq!(9.332636185032189e-302, 2f64.powi(-1000));
+        assert_eq!(1.0261342003245941e-289, 2f64.powi(-960));
         assert_eq!(1.0715086071862673e301, 2f64.powi(1000));
         assert_eq!(ETA, f64::from_bits(1));
     }

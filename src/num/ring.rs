@@ -131,6 +131,19 @@ impl Field for Rational {
     }
 }
 
+/// `[e(0), e(1), ...]` written out, so that the expression is inlined into the caller
+/// (array `map` with a closure may be compiled out of line, which loses the caller's
+/// `#[target_feature(enable = "fma")]` and turns `mul_add` into a software call).
+macro_rules! each {
+    ($i:ident in [$($n:expr),*] => $e:expr) => {
+        [$({
+            let $i = $n;
+            $e
+        }),*]
+    };
+}
+pub(crate) use each;
+
 /// A 3-vector in a ring.
 pub type V3<R> = [R; 3];
 /// A 2-vector in a ring.

@@ -41,6 +41,7 @@ impl Rounded {
 
     /// `x` is the nearest double and the value lies strictly between `x` and its
     /// neighbour on the side given by `side` (`Greater`: the value is above `x`).
+    #[inline]
     pub fn inexact(x: f64, side: Ordering) -> Rounded {
         match side {
             Ordering::Greater => Rounded {
@@ -89,6 +90,7 @@ impl Rounded {
 }
 
 /// The next double above `x` (`f64::next_up`, written out for the crate's MSRV 1.80).
+#[inline]
 pub fn next_up(x: f64) -> f64 {
     if x.is_nan() || x == f64::INFINITY {
         return x;
@@ -101,6 +103,7 @@ pub fn next_up(x: f64) -> f64 {
 }
 
 /// The next double below `x`.
+#[inline]
 pub fn next_down(x: f64) -> f64 {
     -next_up(-x)
 }
