@@ -208,7 +208,9 @@ fn line_plane_case_lp1() {
     let pl = plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
     let c = intersect_line_plane(Linear::Line(&line), &pl);
     assert_eq!(c.status, Status::Exact);
-    assert_eq!(c.arithmetic, Arithmetic::Rational); // exact doubles are decided exactly
+    // Results that are doubles cannot be certified as such by the filter: the expansion
+    // tier decides them exactly.
+    assert_eq!(c.arithmetic, Arithmetic::Expansion);
     let LinePlane::Point(p) = c.value else {
         panic!()
     };
@@ -227,4 +229,52 @@ fn line_plane_case_lp1() {
         (p.t, p.point),
         (q(1, 3), Vector3::new(q(1, 3), q(1, 3), q(1, 1)))
     );
+}
+
+/// Which tier decides: generic input in the filter, exactly degenerate small-integer
+/// input in expansions, and magnitudes beyond the expansions' range in rationals — with
+/// the same (exact) answer.
+#[test]
+fn tiers_escalate_and_agree() {
+    let a = plane([0.1, 0.2, 0.3], [1.0, 0.3, -0.2], [0.25, 1.0, 0.5]);
+    let b = plane([0.7, -0.1, 0.2], [0.0, 1.0, 0.9], [1.0, -0.5, 0.3]);
+    let c = plane([0.3, 0.3, -0.6], [0.6, 0.2, 1.0], [-0.4, 0.8, 0.1]);
+    assert_eq!(
+        intersect_three_planes(&[a, b, c]).arithmetic,
+        Arithmetic::Filter
+    );
+    // Three planes through the z axis: a line, decided exactly in expansions.
+    let p1 = plane([0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
+    let p2 = plane([0.0, 0.0, 5.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
+    let p3 = plane([0.0, 0.0, -3.0], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]);
+    let c = intersect_three_planes(&[p1.clone(), p2.clone(), p3]);
+    assert_eq!(c.arithmetic, Arithmetic::Expansion);
+    let ThreePlanes::Line { line, pair } = c.value else {
+        panic!("expected a line")
+    };
+    assert_eq!(pair, (0, 1));
+    // (8.3): the projection of the second plane's origin (0, 0, 5) onto the line.
+    assert_eq!(line.point, Vector3::new(exact(0.0), exact(0.0), exact(5.0)));
+    // n = N₀ × N₁ with N₀ = (0,0,1)×(1,0,0) = (0,1,0), N₁ = (0,0,1)×(0,1,0) = (−1,0,0)
+    assert_eq!(line.dir, Vector3::new(exact(0.0), exact(0.0), exact(1.0)));
+    // The same configuration with tiny vectors (products below 2^-969 are not
+    // error-free in doubles): rationals.
+    let t = 1e-170;
+    let q1 = plane([0.0; 3], [0.0, 0.0, t], [t, 0.0, 0.0]);
+    let q2 = plane([0.0, 0.0, 5.0], [0.0, 0.0, t], [0.0, t, 0.0]);
+    let q3 = plane([0.0, 0.0, -3.0], [t, t, 0.0], [0.0, 0.0, t]);
+    let c = intersect_three_planes(&[q1, q2, q3]);
+    assert_eq!(c.arithmetic, Arithmetic::Rational);
+    let ThreePlanes::Line { line, .. } = c.value else {
+        panic!("expected a line")
+    };
+    assert_eq!(line.point, Vector3::new(exact(0.0), exact(0.0), exact(5.0)));
+    // dir = N₀ × N₁ = (0, 0, t⁴) ≈ 1e-680: scaled by 2^k into [1, 2) (PlaneLine docs).
+    assert!(line.dir_exponent > 2000);
+    let d = rug::Rational::from_f64(t).unwrap();
+    let d4 = rug::Rational::from(d.clone() * &d) * rug::Rational::from(d.clone() * &d);
+    let scaled = geocert::num::round::scale_pow2(&d4, line.dir_exponent);
+    assert_eq!(line.dir[2], geocert::num::round::round_rational(&scaled));
+    assert!(line.dir[2].nearest >= 1.0 && line.dir[2].nearest < 2.0);
+    assert_eq!((line.dir[0], line.dir[1]), (exact(0.0), exact(0.0)));
 }

@@ -8,6 +8,8 @@ use rug::Rational;
 
 use super::objects::{Coord, Line, Line2, Plane, Segment, Segment2};
 use crate::num::dd::{Dd, ProductMode};
+use crate::num::expansion::Expansion;
+use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, sub2, sub3, Field, Ring, V2, V3};
 
 /// Conversion of an input coordinate into a ring (exact for every pair used).
@@ -28,6 +30,11 @@ impl Lift<Rational> for f64 {
 impl Lift<Rational> for Rational {
     fn lift(&self) -> Rational {
         self.clone()
+    }
+}
+impl Lift<Ratio<Expansion>> for f64 {
+    fn lift(&self) -> Ratio<Expansion> {
+        <Ratio<Expansion> as Field>::from_f64(*self)
     }
 }
 impl<M: ProductMode> Lift<Dd<M>> for f64 {

@@ -13,11 +13,15 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::{LineData, Linear, PlaneData};
-use super::exact_tier::{filter_certified, Rounder};
+use super::exact_tier::{expansion_tier, filter_certified, Rounder};
 use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
-use crate::num::filter::{bound, extend_scale, fma_available, group_scale, round_ratio, sign_of};
+use crate::num::expansion::Expansion;
+use crate::num::filter::{
+    bound, extend_scale, fma_available, group_scale, round_over, Denominator,
+};
+use crate::num::ratio::Ratio;
 use crate::num::ring::{det3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
@@ -81,6 +85,12 @@ pub(crate) struct Terms<R> {
 pub(crate) fn terms<R: Ring>(l: &LineData<R>, p: &PlaneData<R>) -> Terms<R> {
     let den = dot3(p.n(), &l.d);
     let f0 = p.value_at(&l.o);
+    terms_from(l, p, den, f0)
+}
+
+/// The numerators given `N·c'` and `f(c₀)`.
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(l: &LineData<R>, p: &PlaneData<R>, den: R, f0: R) -> Terms<R> {
     let pnum = each!(i in [0, 1, 2] => l.o[i].times(&den).minus(&f0.times(&l.d[i])));
     let uvnum = match p {
         PlaneData::Param { o, u, v, .. } => {
@@ -106,14 +116,16 @@ fn in_range<R: Field>(t: &R, range: &Option<[R; 2]>) -> bool {
 
 /// The exact decision procedure, generic over the field (`f64`: plain; `Rational`: exact).
 pub(crate) fn core<R: Field>(l: &LineData<R>, p: &PlaneData<R>) -> LinePlane<R> {
-    let tm = terms(l, p);
-    if tm.den.is_zero() {
-        return if tm.f0.is_zero() {
+    let den = dot3(p.n(), &l.d);
+    let f0 = p.value_at(&l.o);
+    if den.is_zero() {
+        return if f0.is_zero() {
             LinePlane::Contained
         } else {
             LinePlane::Parallel
         };
     }
+    let tm = terms_from(l, p, den, f0);
     let t = tm.f0.negate().divide(&tm.den);
     let inside = in_range(&t, &l.range);
     let [x, y, z] = tm.pnum.map(|q| q.divide(&tm.den));
@@ -152,6 +164,12 @@ pub fn intersect_line_plane(
 ) -> Certified<LinePlane<Rounded>> {
     if let Some(r) = fast_dispatch(line, plane) {
         return filter_certified(r);
+    }
+    if let Some(c) = expansion_tier(|r| {
+        let l: LineData<Ratio<Expansion>> = line.data();
+        core(&l, &PlaneData::new(plane)).map(|q| r.round(q))
+    }) {
+        return c;
     }
     let l: LineData<Rational> = line.data();
     let p: PlaneData<Rational> = PlaneData::new(plane);
@@ -235,21 +253,22 @@ fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePla
     let p: PlaneData<Dd<M>> = PlaneData::new(plane);
     let tm = terms(&l, &p);
     let e_den = bound(EPS_DEN, &[gk, ml]);
-    sign_of(&tm.den, e_den)?.is_ne().then_some(())?;
+    // Preparing the denominator proves it non-zero (|·| > its error bound).
+    let den = Denominator::new(&tm.den, e_den)?;
     let e_pnum = bound(EPS_PNUM, &[mp, gk, ml]);
     let e_f0 = bound(EPS_PNUM, &[mp, gk]);
-    let t = round_ratio(&tm.f0.negate(), e_f0, &tm.den, e_den)?;
+    let t = round_over(&tm.f0.negate(), e_f0, &den)?;
     let point = [
-        round_ratio(&tm.pnum[0], e_pnum, &tm.den, e_den)?,
-        round_ratio(&tm.pnum[1], e_pnum, &tm.den, e_den)?,
-        round_ratio(&tm.pnum[2], e_pnum, &tm.den, e_den)?,
+        round_over(&tm.pnum[0], e_pnum, &den)?,
+        round_over(&tm.pnum[1], e_pnum, &den)?,
+        round_over(&tm.pnum[2], e_pnum, &den)?,
     ];
     let uv = match &tm.uvnum {
         Some([un, vn]) => {
             let e_uv = bound(EPS_UVNUM, &[mp, mg, ml]);
             Some(Vector2::new(
-                round_ratio(un, e_uv, &tm.den, e_den)?,
-                round_ratio(vn, e_uv, &tm.den, e_den)?,
+                round_over(un, e_uv, &den)?,
+                round_over(vn, e_uv, &den)?,
             ))
         }
         None => None,

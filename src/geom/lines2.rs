@@ -18,10 +18,12 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::data::{Line2Data, Linear2};
-use super::exact_tier::{filter_certified, Rounder};
+use super::exact_tier::{expansion_tier, filter_certified, Rounder};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
-use crate::num::filter::{bound, fma_available, group_scale, round_ratio, sign_of};
+use crate::num::expansion::Expansion;
+use crate::num::filter::{bound, fma_available, group_scale, round_over, Denominator};
+use crate::num::ratio::Ratio;
 use crate::num::ring::{cross2, dot2, each, sub2, Field, Ring, V2};
 use crate::num::round::Rounded;
 
@@ -104,8 +106,13 @@ pub(crate) struct Terms<R> {
 
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(a: &Line2Data<R>, b: &Line2Data<R>) -> Terms<R> {
+    terms_from(a, b, cross2(&a.d, &b.d))
+}
+
+/// The numerators given `Δ`.
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(a: &Line2Data<R>, b: &Line2Data<R>, delta: R) -> Terms<R> {
     let d = sub2(&b.o, &a.o);
-    let delta = cross2(&a.d, &b.d);
     let t1n = cross2(&d, &b.d);
     let t2n = cross2(&d, &a.d);
     let pnum = each!(i in [0, 1] => a.o[i].times(&delta).plus(&t1n.times(&a.d[i])));
@@ -125,8 +132,9 @@ fn in_range<R: Field>(t: &R, range: &Option<[R; 2]>) -> bool {
 
 /// The exact decision procedure, generic over the field.
 pub(crate) fn core<R: Field>(a: &Line2Data<R>, b: &Line2Data<R>) -> Intersection2<R> {
-    let tm = terms(a, b);
-    if !tm.delta.is_zero() {
+    let delta = cross2(&a.d, &b.d);
+    if !delta.is_zero() {
+        let tm = terms_from(a, b, delta);
         let t1 = tm.t1n.divide(&tm.delta);
         let t2 = tm.t2n.divide(&tm.delta);
         let point = Vector2::new(tm.pnum[0].divide(&tm.delta), tm.pnum[1].divide(&tm.delta));
@@ -216,6 +224,11 @@ pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersec
     if let Some(r) = fast_dispatch(a, b) {
         return filter_certified(r);
     }
+    if let Some(c) =
+        expansion_tier(|r| core::<Ratio<Expansion>>(&a.data(), &b.data()).map(|q| r.round(q)))
+    {
+        return c;
+    }
     let mut r = Rounder::default();
     let value = core::<Rational>(&a.data(), &b.data()).map(|q| r.round(q));
     r.certify(value)
@@ -283,13 +296,14 @@ fn fast<M: ProductMode>(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection
     let db: Line2Data<Dd<M>> = b.data();
     let tm = terms(&da, &db);
     let e_delta = bound(EPS_DELTA, &[l1, l2]);
-    sign_of(&tm.delta, e_delta)?.is_ne().then_some(())?;
-    let t1 = round_ratio(&tm.t1n, bound(EPS_T, &[mp, l2]), &tm.delta, e_delta)?;
-    let t2 = round_ratio(&tm.t2n, bound(EPS_T, &[mp, l1]), &tm.delta, e_delta)?;
+    // Preparing the denominator proves it non-zero (|·| > its error bound).
+    let delta = Denominator::new(&tm.delta, e_delta)?;
+    let t1 = round_over(&tm.t1n, bound(EPS_T, &[mp, l2]), &delta)?;
+    let t2 = round_over(&tm.t2n, bound(EPS_T, &[mp, l1]), &delta)?;
     let e_p = bound(EPS_P, &[mp, l1, l2]);
     let point = Vector2::new(
-        round_ratio(&tm.pnum[0], e_p, &tm.delta, e_delta)?,
-        round_ratio(&tm.pnum[1], e_p, &tm.delta, e_delta)?,
+        round_over(&tm.pnum[0], e_p, &delta)?,
+        round_over(&tm.pnum[1], e_p, &delta)?,
     );
     let inside = |t: &Rounded, r: Option<[f64; 2]>| {
         r.map_or(true, |[lo, hi]| {

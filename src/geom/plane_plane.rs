@@ -22,13 +22,15 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::PlaneData;
-use super::exact_tier::{filter_certified, Rounder};
+use super::exact_tier::{expansion_tier, filter_certified, ExpansionRounder, Rounder};
 use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::expansion::Expansion;
 use crate::num::filter::{
-    bound, extend_scale, fma_available, group_scale, round_ratio, round_value, sign_of,
+    bound, extend_scale, fma_available, group_scale, round_over, round_value, Denominator,
 };
+use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::{exponent_of, Rounded};
 
@@ -156,7 +158,12 @@ fn param_terms<R: Ring>(
 
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
-    let n = cross3(a.n(), b.n());
+    terms_from(a, b, cross3(a.n(), b.n()))
+}
+
+/// The line's numerators given its direction `n = N_a × N_b`.
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> Terms<R> {
     let nn = dot3(&n, &n);
     let x_r = reference(a, b);
     let fa = a.value_at(&x_r);
@@ -182,8 +189,8 @@ pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
 
 /// The exact decision procedure, generic over the field.
 pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R> {
-    let tm = terms(a, b);
-    if is_zero3(&tm.n) {
+    let n = cross3(a.n(), b.n());
+    if is_zero3(&n) {
         let diff = sub3(&scale3(&a.offset(), b.n()), &scale3(&b.offset(), a.n()));
         return if is_zero3(&diff) {
             PlanePlane::Coincident
@@ -191,7 +198,7 @@ pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R
             PlanePlane::Parallel
         };
     }
-    PlanePlane::Line(finish(tm))
+    PlanePlane::Line(finish(terms_from(a, b, n)))
 }
 
 fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
@@ -251,10 +258,30 @@ pub(crate) fn round_line(l: PlaneLine<Rational>, r: &mut Rounder) -> PlaneLine<R
     }
 }
 
+/// Round an exact plane line from the expansion tier (unscaled directions only).
+pub(crate) fn round_line_expansion(
+    l: PlaneLine<Ratio<Expansion>>,
+    r: &mut ExpansionRounder,
+) -> PlaneLine<Rounded> {
+    r.check_unscaled(l.dir.as_slice());
+    l.map(|x| r.round(x))
+}
+
 /// Certified: exact verdict, correctly rounded point, direction and parameter lines.
 pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
     if let Some(l) = fast_dispatch(a, b) {
         return filter_certified(PlanePlane::Line(l));
+    }
+    if let Some(c) =
+        expansion_tier(
+            |r| match core::<Ratio<Expansion>>(&PlaneData::new(a), &PlaneData::new(b)) {
+                PlanePlane::Line(l) => PlanePlane::Line(round_line_expansion(l, r)),
+                PlanePlane::Parallel => PlanePlane::Parallel,
+                PlanePlane::Coincident => PlanePlane::Coincident,
+            },
+        )
+    {
+        return c;
     }
     let mut r = Rounder::default();
     let res = match core::<Rational>(&PlaneData::new(a), &PlaneData::new(b)) {
@@ -326,7 +353,8 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
     let pb: PlaneData<Dd<M>> = PlaneData::new(b);
     let tm = terms(&pa, &pb);
     let e_nn = bound(EPS_NN, &[ka, ka, kb, kb]);
-    sign_of(&tm.nn, e_nn)?.is_ne().then_some(())?;
+    // Preparing the denominator proves it non-zero (|·| > its error bound).
+    let nn = Denominator::new(&tm.nn, e_nn)?;
     let e_n = bound(EPS_N, &[ka, kb]);
     let dir = [
         round_value(&tm.n[0], e_n),
@@ -343,9 +371,9 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
     }
     let e_p = bound(EPS_PNUM, &[mp, ka, ka, kb, kb]);
     let point = [
-        round_ratio(&tm.pnum[0], e_p, &tm.nn, e_nn)?,
-        round_ratio(&tm.pnum[1], e_p, &tm.nn, e_nn)?,
-        round_ratio(&tm.pnum[2], e_p, &tm.nn, e_nn)?,
+        round_over(&tm.pnum[0], e_p, &nn)?,
+        round_over(&tm.pnum[1], e_p, &nn)?,
+        round_over(&tm.pnum[2], e_p, &nn)?,
     ];
     let side = |t: &Option<ParamTerms<Dd<M>>>,
                 m: f64,
@@ -357,8 +385,8 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
         let e_dir = bound(EPS_PDIR, &[m, ko]);
         Some(Some(ParamLine {
             origin: Vector2::new(
-                round_ratio(&t.num[0], e_num, &tm.nn, e_nn)?,
-                round_ratio(&t.num[1], e_num, &tm.nn, e_nn)?,
+                round_over(&t.num[0], e_num, &nn)?,
+                round_over(&t.num[1], e_num, &nn)?,
             ),
             dir: Vector2::new(
                 round_value(&t.dir[0], e_dir)?,

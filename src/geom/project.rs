@@ -26,7 +26,7 @@ use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
 use crate::num::filter::{
-    bound, extend_scale, fma_available, group_scale, round_ratio, sign_of, SCALE_MIN,
+    bound, extend_scale, fma_available, group_scale, round_over, sign_of, Denominator, SCALE_MIN,
 };
 use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::{sqrt_rational, Rounded};
@@ -466,7 +466,8 @@ fn fast_line<M: ProductMode>(
     let pd: V3<Dd<M>> = [p[0].lift(), p[1].lift(), p[2].lift()];
     let tm = line_terms(&pd, &l);
     let e_dd = bound(EPS_L[1], &[ml, ml]);
-    let t = round_ratio(&tm.tnum, bound(EPS_L[0], &[mp, ml]), &tm.dd, e_dd)?;
+    let dd = Denominator::new(&tm.dd, e_dd)?;
+    let t = round_over(&tm.tnum, bound(EPS_L[0], &[mp, ml]), &dd)?;
     let inside = match line {
         Linear::Line(l) => l.range().map_or(true, |[a, b]| {
             t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le()
@@ -477,7 +478,7 @@ fn fast_line<M: ProductMode>(
         return None;
     }
     let e_f = bound(EPS_L[2], &[mp, ml, ml]);
-    let foot = each!(i in [0, 1, 2] => round_ratio(&tm.footnum[i], e_f, &tm.dd, e_dd));
+    let foot = each!(i in [0, 1, 2] => round_over(&tm.footnum[i], e_f, &dd));
     let [Some(f0), Some(f1), Some(f2)] = foot else {
         return None;
     };
@@ -525,20 +526,18 @@ fn fast_plane<M: ProductMode>(
     let pd: V3<Dd<M>> = [p[0].lift(), p[1].lift(), p[2].lift()];
     let tm = plane_terms(&pd, &q);
     let e_nn = bound(EPS_P[1], &[s, s]);
+    let nn = Denominator::new(&tm.nn, e_nn)?;
     let e_foot = bound(EPS_P[2], &[mp, s, s]);
-    let foot = each!(i in [0, 1, 2] => round_ratio(&tm.footnum[i], e_foot, &tm.nn, e_nn));
+    let foot = each!(i in [0, 1, 2] => round_over(&tm.footnum[i], e_foot, &nn));
     let [Some(f0), Some(f1), Some(f2)] = foot else {
         return None;
     };
     let uv = match &tm.uv {
         Some(([un, vn], g)) => {
             let e_g = bound(EPS_P[4], &[mg, mg, mg, mg]);
-            sign_of(g, e_g)?;
+            let g = Denominator::new(g, e_g)?;
             let e = bound(EPS_P[3], &[mp, mg, mg, mg]);
-            Some(Vector2::new(
-                round_ratio(un, e, g, e_g)?,
-                round_ratio(vn, e, g, e_g)?,
-            ))
+            Some(Vector2::new(round_over(un, e, &g)?, round_over(vn, e, &g)?))
         }
         None => None,
     };

@@ -23,12 +23,14 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::PlaneData;
-use super::exact_tier::{filter_certified, Rounder};
+use super::exact_tier::{expansion_tier, filter_certified, Rounder};
 use super::objects::Plane;
-use super::plane_plane::{line_of, plane_scales, round_line, PlaneLine};
+use super::plane_plane::{line_of, plane_scales, round_line, round_line_expansion, PlaneLine};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
-use crate::num::filter::{bound, fma_available, round_ratio, sign_of, SCALE_MIN};
+use crate::num::expansion::Expansion;
+use crate::num::filter::{bound, fma_available, round_over, Denominator, SCALE_MIN};
+use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
@@ -77,11 +79,25 @@ pub(crate) struct Terms<R> {
     pub params: [Option<V2<R>>; 3],
 }
 
+/// `[N₁×N₂, N₂×N₀, N₀×N₁]` and `D = N₀·(N₁×N₂)`: the decision of §7.1.
 #[inline(always)]
-pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
+pub(crate) fn det_terms<R: Ring>(p: &[PlaneData<R>; 3]) -> ([V3<R>; 3], R) {
     let n = [p[0].n(), p[1].n(), p[2].n()];
     let c = [cross3(n[1], n[2]), cross3(n[2], n[0]), cross3(n[0], n[1])];
     let det = dot3(n[0], &c[0]);
+    (c, det)
+}
+
+#[inline(always)]
+pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
+    let (c, det) = det_terms(p);
+    terms_from(p, &c, det)
+}
+
+/// The point-case numerators, given [`det_terms`].
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(p: &[PlaneData<R>; 3], c: &[V3<R>; 3], det: R) -> Terms<R> {
+    let n = [p[0].n(), p[1].n(), p[2].n()];
     let x_r = p
         .iter()
         .find_map(|q| q.origin())
@@ -118,8 +134,9 @@ fn plane_params<R: Ring>(p: &[PlaneData<R>; 3], n: &[&V3<R>; 3], k: usize) -> Op
 
 /// The exact decision procedure, generic over the field.
 pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
-    let tm = terms(p);
-    if !tm.det.is_zero() {
+    let (c, det) = det_terms(p);
+    if !det.is_zero() {
+        let tm = terms_from(p, &c, det);
         let d = &tm.det;
         let [x, y, z] = tm.pnum.map(|q| q.divide(d));
         return ThreePlanes::Point {
@@ -129,8 +146,9 @@ pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
                 .map(|q| q.map(|[u, v]| Vector2::new(u.divide(d), v.divide(d)))),
         };
     }
-    for (i, j, k) in [(0, 1, 2), (0, 2, 1), (1, 2, 0)] {
-        if !is_zero3(&cross3(p[i].n(), p[j].n())) {
+    // N_i × N_j for the pairs (0,1), (0,2), (1,2) are ±c[2], ±c[1], c[0].
+    for (i, j, k, cij) in [(0, 1, 2, &c[2]), (0, 2, 1, &c[1]), (1, 2, 0, &c[0])] {
+        if !is_zero3(cij) {
             let line = line_of(&p[i], &p[j]);
             let point = [
                 line.point[0].clone(),
@@ -185,6 +203,22 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
         PlaneData::new(&p[1]),
         PlaneData::new(&p[2]),
     ];
+    if let Some(c) = expansion_tier(|r| {
+        let data: [PlaneData<Ratio<Expansion>>; 3] = [
+            PlaneData::new(&p[0]),
+            PlaneData::new(&p[1]),
+            PlaneData::new(&p[2]),
+        ];
+        match core(&data) {
+            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
+                line: round_line_expansion(line, r),
+                pair,
+            },
+            other => other.map(|q| r.round(q)),
+        }
+    }) {
+        return c;
+    }
     let mut r = Rounder::default();
     let res = match core(&data) {
         ThreePlanes::Line { line, pair } => ThreePlanes::Line {
@@ -243,20 +277,21 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     ];
     let tm = terms(&data);
     let e_det = bound(EPS_DET, &s);
-    sign_of(&tm.det, e_det)?.is_ne().then_some(())?;
+    // Preparing the denominator proves it non-zero (|·| > its error bound).
+    let det = Denominator::new(&tm.det, e_det)?;
     let e_p = bound(EPS_PNUM, &[mp, s0, s1, s2]);
     let point = [
-        round_ratio(&tm.pnum[0], e_p, &tm.det, e_det)?,
-        round_ratio(&tm.pnum[1], e_p, &tm.det, e_det)?,
-        round_ratio(&tm.pnum[2], e_p, &tm.det, e_det)?,
+        round_over(&tm.pnum[0], e_p, &det)?,
+        round_over(&tm.pnum[1], e_p, &det)?,
+        round_over(&tm.pnum[2], e_p, &det)?,
     ];
     let mut params = [None, None, None];
     for (k, q) in tm.params.iter().enumerate() {
         if let Some([un, vn]) = q {
             let e = bound(EPS_PARAM, &[mp, s[(k + 1) % 3], s[(k + 2) % 3], m[k]]);
             params[k] = Some(Vector2::new(
-                round_ratio(un, e, &tm.det, e_det)?,
-                round_ratio(vn, e, &tm.det, e_det)?,
+                round_over(un, e, &det)?,
+                round_over(vn, e, &det)?,
             ));
         }
     }

@@ -85,14 +85,50 @@ pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
     }
 }
 
-/// The exact quotient `P/Q` correctly rounded, where `p`, `q` approximate `P`, `Q` with
+/// A denominator prepared once for several [`round_ratio`] calls: normalised, with a
+/// lower bound on its exact magnitude and its reciprocal (for the candidate only).
+#[derive(Debug, Clone, Copy)]
+pub struct Denominator<M: ProductMode> {
+    q: Dd<M>,
+    eq: f64,
+    q_lo: f64,
+    inv: f64,
+}
+
+impl<M: ProductMode> Denominator<M> {
+    /// `None` when `q` is out of the accepted range or its sign is not decided by `eq`.
+    #[inline(always)]
+    pub fn new(q: &Dd<M>, eq: f64) -> Option<Self> {
+        let q = q.normalized();
+        let qa = q.h.abs();
+        if !(qa >= TINY && qa <= C_MAX && eq <= C_MAX) {
+            return None;
+        }
+        let q_lo = (qa - add_up(q.l.abs(), eq)) * (1.0 - 4.0 * U);
+        if !(q_lo > 0.0) {
+            return None;
+        }
+        Some(Denominator {
+            q,
+            eq,
+            q_lo,
+            inv: 1.0 / q.h,
+        })
+    }
+}
+
+const TINY: f64 = 1.1830521861667747e-271; // 2^-900
+const C_MIN: f64 = 1.0261342003245941e-289; // 2^-960
+const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
+
+/// The exact quotient `P/Q` correctly rounded (`d` prepared from `Q`), where `p`, `q` approximate `P`, `Q` with
 /// absolute errors at most `ep`, `eq` — if the bounds decide the rounding and `P/Q` is
 /// provably not a double (a value that may be a double goes to the exact tier, which
 /// reports `lo = hi`).
 ///
 /// Method: a candidate `c ≈ p/q` (one division, one correction step), the residual
 /// `R = p − c·q` in double-double, and the test `|R/Q| < min(gap below c, gap above c)/2`,
-/// i.e. `P/Q` lies strictly inside the rounding cell of `c`. With `p`, `q` normalised,
+/// i.e. `P/Q` lies strictly inside the rounding cell of `c`. With `q` normalised,
 /// `(m, e) = two_prod(c, q.h)` (exact), `e' = e + c·q.l` (error `≤ u|c q.l| + u|e'|`),
 /// `(s, t) = two_sum(p.h, −m)` (exact), `r_l = (t + p.l) − e'` (error
 /// `≤ u|t + p.l| + u|r_l|`) and `R̂ = s + r_l` (error `≤ u|R̂|`): so
@@ -101,22 +137,17 @@ pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
 /// Accepted only for `2⁻⁹⁰⁰ ≤ |p.h|, |q.h| ≤ 2¹⁰⁰⁰` and `2⁻⁹⁶⁰ ≤ |c| ≤ 2¹⁰⁰⁰`, so that no
 /// quantity of the test underflows or overflows and half an ulp of `c` is a normal double.
 #[inline(always)]
-pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Option<Rounded> {
-    const TINY: f64 = 1.1830521861667747e-271; // 2^-900
-    const C_MIN: f64 = 1.0261342003245941e-289; // 2^-960
-    const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
-    let (p, q) = (p.normalized(), q.normalized());
-    let (pa, qa) = (p.h.abs(), q.h.abs());
-    if !(pa >= TINY && qa >= TINY && pa <= C_MAX && qa <= C_MAX && ep <= C_MAX && eq <= C_MAX) {
-        return None;
-    }
-    let q_lo = (qa - add_up(q.l.abs(), eq)) * (1.0 - 4.0 * U);
-    if !(q_lo > 0.0) {
+pub fn round_over<M: ProductMode>(p: &Dd<M>, ep: f64, d: &Denominator<M>) -> Option<Rounded> {
+    let (q, eq, q_lo, inv) = (d.q, d.eq, d.q_lo, d.inv);
+    // `p` is used as it is: the bound below is computed from the actual parts, so it
+    // holds whether or not `p` is normalised (a poorly normalised `p` only spoils the
+    // candidate, and then the test fails).
+    let pa = p.h.abs();
+    if !(pa >= TINY && pa <= C_MAX && ep <= C_MAX) {
         return None;
     }
     // Candidate: c₀ = p.h/q.h, corrected once by the residual (c need not be right:
     // a wrong candidate fails the test below).
-    let inv = 1.0 / q.h;
     let c0 = p.h * inv;
     let rem = M::mul_add(-c0, q.h, p.h) + (p.l - c0 * q.l);
     let c = c0 + rem * inv;
@@ -159,6 +190,13 @@ pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Op
             Ordering::Less
         },
     ))
+}
+
+/// The exact quotient `P/Q` correctly rounded (see [`round_over`], which does the work
+/// once the denominator is prepared by [`Denominator::new`]).
+#[inline(always)]
+pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Option<Rounded> {
+    round_over(p, ep, &Denominator::new(q, eq)?)
 }
 
 /// A polynomial value correctly rounded (see [`round_ratio`] with `Q = 1`).

@@ -4,8 +4,10 @@
 
 pub mod dd;
 pub mod error_bound;
+pub mod expansion;
 pub mod filter;
 pub mod parse;
+pub mod ratio;
 pub mod real;
 pub mod ring;
 pub mod round;
