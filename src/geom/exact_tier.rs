@@ -56,8 +56,9 @@ pub(crate) struct ExpansionRounder {
 impl ExpansionRounder {
     /// `x` correctly rounded (a placeholder NaN when it cannot be: see `ok`).
     pub(crate) fn round(&mut self, x: Ratio<Expansion>) -> Rounded {
-        self.len = self.len.max(x.num.len()).max(x.den.len());
-        round_quotient(&x.num, &x.den).unwrap_or_else(|| {
+        let den = x.denominator();
+        self.len = self.len.max(x.num.len()).max(den.len());
+        round_quotient(&x.num, &den).unwrap_or_else(|| {
             self.ok = false;
             Rounded::exact(f64::NAN)
         })
@@ -68,7 +69,7 @@ impl ExpansionRounder {
     pub(crate) fn check_unscaled(&mut self, dir: &[Ratio<Expansion>]) {
         let big = dir
             .iter()
-            .map(|x| (x.num.estimate() / x.den.estimate()).abs())
+            .map(|x| (x.num.estimate() / x.denominator().estimate()).abs())
             .fold(0.0, f64::max);
         if !(big >= 2f64.powi(-999) && big < 2f64.powi(999)) {
             self.ok = false;

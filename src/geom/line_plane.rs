@@ -251,10 +251,11 @@ fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePla
     let gk = if k2 { mg * mg } else { mg };
     let l: LineData<Dd<M>> = line.data();
     let p: PlaneData<Dd<M>> = PlaneData::new(plane);
-    let tm = terms(&l, &p);
+    // The decision first: preparing N·c' proves it non-zero.
+    let d = dot3(p.n(), &l.d);
     let e_den = bound(EPS_DEN, &[gk, ml]);
-    // Preparing the denominator proves it non-zero (|·| > its error bound).
-    let den = Denominator::new(&tm.den, e_den)?;
+    let den = Denominator::new(&d, e_den)?;
+    let tm = terms_from(&l, &p, d, p.value_at(&l.o));
     let e_pnum = bound(EPS_PNUM, &[mp, gk, ml]);
     let e_f0 = bound(EPS_PNUM, &[mp, gk]);
     let t = round_over(&tm.f0.negate(), e_f0, &den)?;

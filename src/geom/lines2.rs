@@ -294,10 +294,11 @@ fn fast<M: ProductMode>(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection
     let mp = pa.max(pb);
     let da: Line2Data<Dd<M>> = a.data();
     let db: Line2Data<Dd<M>> = b.data();
-    let tm = terms(&da, &db);
+    // The decision first: preparing Δ proves Δ ≠ 0.
+    let d = cross2(&da.d, &db.d);
     let e_delta = bound(EPS_DELTA, &[l1, l2]);
-    // Preparing the denominator proves it non-zero (|·| > its error bound).
-    let delta = Denominator::new(&tm.delta, e_delta)?;
+    let delta = Denominator::new(&d, e_delta)?;
+    let tm = terms_from(&da, &db, d);
     let t1 = round_over(&tm.t1n, bound(EPS_T, &[mp, l2]), &delta)?;
     let t2 = round_over(&tm.t2n, bound(EPS_T, &[mp, l1]), &delta)?;
     let e_p = bound(EPS_P, &[mp, l1, l2]);

@@ -351,10 +351,11 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
     let (mb, kb, mp) = plane_scales(b, mp)?;
     let pa: PlaneData<Dd<M>> = PlaneData::new(a);
     let pb: PlaneData<Dd<M>> = PlaneData::new(b);
-    let tm = terms(&pa, &pb);
+    // The decision first: preparing |n|² proves n ≠ 0.
+    let n = cross3(pa.n(), pb.n());
     let e_nn = bound(EPS_NN, &[ka, ka, kb, kb]);
-    // Preparing the denominator proves it non-zero (|·| > its error bound).
-    let nn = Denominator::new(&tm.nn, e_nn)?;
+    let nn = Denominator::new(&dot3(&n, &n), e_nn)?;
+    let tm = terms_from(&pa, &pb, n);
     let e_n = bound(EPS_N, &[ka, kb]);
     let dir = [
         round_value(&tm.n[0], e_n),

@@ -198,11 +198,6 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
     if let Some(r) = fast_dispatch(p) {
         return filter_certified(r);
     }
-    let data: [PlaneData<Rational>; 3] = [
-        PlaneData::new(&p[0]),
-        PlaneData::new(&p[1]),
-        PlaneData::new(&p[2]),
-    ];
     if let Some(c) = expansion_tier(|r| {
         let data: [PlaneData<Ratio<Expansion>>; 3] = [
             PlaneData::new(&p[0]),
@@ -219,6 +214,11 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
     }) {
         return c;
     }
+    let data: [PlaneData<Rational>; 3] = [
+        PlaneData::new(&p[0]),
+        PlaneData::new(&p[1]),
+        PlaneData::new(&p[2]),
+    ];
     let mut r = Rounder::default();
     let res = match core(&data) {
         ThreePlanes::Line { line, pair } => ThreePlanes::Line {
@@ -275,10 +275,12 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
         PlaneData::new(&p[1]),
         PlaneData::new(&p[2]),
     ];
-    let tm = terms(&data);
+    // The decision first: preparing D proves D ≠ 0 (|D̂| > its error bound), and an
+    // undecided (e.g. exactly degenerate) input leaves before the numerators.
+    let (c, d) = det_terms(&data);
     let e_det = bound(EPS_DET, &s);
-    // Preparing the denominator proves it non-zero (|·| > its error bound).
-    let det = Denominator::new(&tm.det, e_det)?;
+    let det = Denominator::new(&d, e_det)?;
+    let tm = terms_from(&data, &c, d);
     let e_p = bound(EPS_PNUM, &[mp, s0, s1, s2]);
     let point = [
         round_over(&tm.pnum[0], e_p, &det)?,

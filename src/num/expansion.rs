@@ -1,7 +1,7 @@
 //! Exact arithmetic on floating-point expansions (Shewchuk 1997): a value is an unevaluated
 //! sum of non-overlapping doubles, increasing in magnitude, with zeros eliminated. Sums
 //! (`fast_expansion_sum_zeroelim`), products (`scale_expansion_zeroelim` accumulated,
-//! then `compress`) and signs are exact and need no gcd and, for up to eight components,
+//! then `compress`) and signs are exact and need no gcd and, for up to six components,
 //! no allocation. The middle tier of the linear kernel (`Arithmetic::Expansion`).
 //!
 //! Exactness needs every `two_prod` to be error-free (no underflow: `|ab| ≥ 2⁻⁹⁶⁹`, and
@@ -18,7 +18,7 @@ use super::dd::{fast_two_sum, two_sum, ProductMode, WithoutFma};
 use super::ring::Ring;
 use super::round::{next_down, next_up, Rounded};
 
-const INLINE: usize = 8;
+const INLINE: usize = 6;
 /// Longest operand size handled (a sum's total length, a product's `len·len`); beyond,
 /// the computation is left to rationals.
 const MAX_LEN: usize = 4096;
@@ -135,8 +135,26 @@ impl Expansion {
         self.len == 0
     }
 
-    /// `e + f` (Shewchuk's `fast_expansion_sum_zeroelim`).
+    /// `e + f` (Shewchuk's `fast_expansion_sum_zeroelim`); `e − f` when `neg`.
     fn sum(e: &[f64], f: &[f64]) -> Expansion {
+        Self::sum_signed(e, f, false)
+    }
+
+    fn sum_signed(e: &[f64], f_in: &[f64], neg: bool) -> Expansion {
+        // Negating f on the fly (into a stack copy) avoids a temporary expansion.
+        let mut f_stack = [0.0; 16];
+        let f_heap: Vec<f64>;
+        let f: &[f64] = if !neg {
+            f_in
+        } else if f_in.len() <= 16 {
+            for (d, &x) in f_stack.iter_mut().zip(f_in) {
+                *d = -x;
+            }
+            &f_stack[..f_in.len()]
+        } else {
+            f_heap = f_in.iter().map(|x| -x).collect();
+            &f_heap
+        };
         let mut h = Expansion::empty();
         h.reserve(e.len() + f.len());
         if e.is_empty() || f.is_empty() {
@@ -237,14 +255,14 @@ impl Expansion {
     /// Shewchuk's `compress`: the same value with (usually) fewer components.
     fn compress(mut self) -> Expansion {
         let n = self.len;
-        if n < 2 {
+        if n <= 2 {
             return self;
         }
-        // Scratch on the stack up to 64 components (no allocation in the common case).
-        let mut e_stack = [0.0; 64];
-        let mut h_stack = [0.0; 64];
+        // Scratch on the stack up to 16 components (no allocation in the common case).
+        let mut e_stack = [0.0; 16];
+        let mut h_stack = [0.0; 16];
         let (mut e_heap, mut h_heap) = (Vec::new(), Vec::new());
-        let (e, h): (&mut [f64], &mut [f64]) = if n <= 64 {
+        let (e, h): (&mut [f64], &mut [f64]) = if n <= 16 {
             (&mut e_stack[..n], &mut h_stack[..n])
         } else {
             e_heap.resize(n, 0.0);
@@ -315,7 +333,11 @@ impl Ring for Expansion {
         Expansion::sum(self.as_slice(), rhs.as_slice())
     }
     fn minus(&self, rhs: &Self) -> Self {
-        self.plus(&rhs.negate())
+        if self.len + rhs.len > MAX_LEN || Poison::is_set() {
+            Poison::set();
+            return Expansion::empty();
+        }
+        Expansion::sum_signed(self.as_slice(), rhs.as_slice(), true)
     }
     fn times(&self, rhs: &Self) -> Self {
         if self.len * rhs.len > MAX_LEN || Poison::is_set() {

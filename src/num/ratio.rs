@@ -23,20 +23,37 @@ impl SignedRing for Expansion {
     }
 }
 
-/// `num / den`, `den ≠ 0`.
+/// `num / den`, `den ≠ 0`; `den = None` stands for 1 (whole values skip the products).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Ratio<E> {
     pub num: E,
-    pub den: E,
+    pub den: Option<E>,
 }
 
 impl<E: SignedRing> Ratio<E> {
     fn whole(num: E) -> Self {
-        Ratio { num, den: E::one() }
+        Ratio { num, den: None }
     }
-    fn is_whole(&self) -> bool {
-        // a structural test is enough: `one()` is what `whole` stores
-        self.den == E::one()
+    /// The denominator (1 for whole values).
+    pub fn denominator(&self) -> E {
+        self.den.clone().unwrap_or_else(E::one)
+    }
+}
+
+/// `a·b` where `None` is 1.
+fn mul_opt<E: SignedRing>(a: &Option<E>, b: &Option<E>) -> Option<E> {
+    match (a, b) {
+        (None, None) => None,
+        (Some(x), None) | (None, Some(x)) => Some(x.clone()),
+        (Some(x), Some(y)) => Some(x.times(y)),
+    }
+}
+
+/// `x·d` where `d = None` is 1.
+fn scale_opt<E: SignedRing>(x: &E, d: &Option<E>) -> E {
+    match d {
+        None => x.clone(),
+        Some(d) => x.times(d),
     }
 }
 
@@ -48,38 +65,25 @@ impl<E: SignedRing> Ring for Ratio<E> {
         Self::whole(E::one())
     }
     fn plus(&self, r: &Self) -> Self {
-        if self.is_whole() && r.is_whole() {
-            return Self::whole(self.num.plus(&r.num));
-        }
-        if self.den == r.den {
-            return Ratio {
+        match (&self.den, &r.den) {
+            (None, None) => Self::whole(self.num.plus(&r.num)),
+            (Some(a), Some(b)) if a == b => Ratio {
                 num: self.num.plus(&r.num),
                 den: self.den.clone(),
-            };
-        }
-        Ratio {
-            num: self.num.times(&r.den).plus(&r.num.times(&self.den)),
-            den: self.den.times(&r.den),
+            },
+            _ => Ratio {
+                num: scale_opt(&self.num, &r.den).plus(&scale_opt(&r.num, &self.den)),
+                den: mul_opt(&self.den, &r.den),
+            },
         }
     }
     fn minus(&self, r: &Self) -> Self {
         self.plus(&r.negate())
     }
     fn times(&self, r: &Self) -> Self {
-        match (self.is_whole(), r.is_whole()) {
-            (true, true) => Self::whole(self.num.times(&r.num)),
-            (true, false) => Ratio {
-                num: self.num.times(&r.num),
-                den: r.den.clone(),
-            },
-            (false, true) => Ratio {
-                num: self.num.times(&r.num),
-                den: self.den.clone(),
-            },
-            (false, false) => Ratio {
-                num: self.num.times(&r.num),
-                den: self.den.times(&r.den),
-            },
+        Ratio {
+            num: self.num.times(&r.num),
+            den: mul_opt(&self.den, &r.den),
         }
     }
     fn negate(&self) -> Self {
@@ -92,24 +96,16 @@ impl<E: SignedRing> Ring for Ratio<E> {
 
 impl<E: SignedRing> Field for Ratio<E> {
     fn divide(&self, r: &Self) -> Self {
-        let num = if r.is_whole() {
-            self.num.clone()
-        } else {
-            self.num.times(&r.den)
-        };
-        let den = if self.is_whole() {
-            r.num.clone()
-        } else {
-            self.den.times(&r.num)
-        };
-        Ratio { num, den }
+        Ratio {
+            num: scale_opt(&self.num, &r.den),
+            den: Some(scale_opt(&r.num, &self.den)),
+        }
     }
     fn sign(&self) -> Ordering {
-        let (a, b) = (self.num.sign_of(), self.den.sign_of());
-        if b == Ordering::Less {
-            a.reverse()
-        } else {
-            a
+        let a = self.num.sign_of();
+        match &self.den {
+            Some(d) if d.sign_of() == Ordering::Less => a.reverse(),
+            _ => a,
         }
     }
     fn from_f64(x: f64) -> Self {
