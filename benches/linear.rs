@@ -114,7 +114,7 @@ fn pairs(degenerate: bool) -> Vec<(Plane<f64>, Plane<f64>)> {
             } else {
                 Vector3::new(0.0, 0.0, 1.0)
             };
-            let b = Plane::parametric(origin + shift, v.clone(), u.clone()).unwrap();
+            let b = Plane::parametric(origin + shift, *v, *u).unwrap();
             (a, b)
         })
         .collect()
@@ -136,11 +136,7 @@ fn lines(degenerate: bool) -> Vec<(Line<f64>, Plane<f64>)> {
                 unreachable!()
             };
             let dir = u * r.int() + v;
-            let dir = if dir == Vector3::zeros() {
-                u.clone()
-            } else {
-                dir
-            };
+            let dir = if dir == Vector3::zeros() { *u } else { dir };
             let o = if r.next() > 0.0 {
                 origin + u
             } else {
@@ -149,6 +145,15 @@ fn lines(degenerate: bool) -> Vec<(Line<f64>, Plane<f64>)> {
             (Line::new(o, dir).unwrap(), p)
         })
         .collect()
+}
+
+/// The tier expected to decide each batch (checked before timing).
+fn tier(degenerate: bool) -> geocert::Arithmetic {
+    if degenerate {
+        geocert::Arithmetic::Expansion
+    } else {
+        geocert::Arithmetic::Filter
+    }
 }
 
 fn bench(c: &mut Criterion) {
@@ -166,27 +171,30 @@ fn bench(c: &mut Criterion) {
             );
             assert_eq!(line, degenerate);
         }
+        for p in &t {
+            assert_eq!(intersect_three_planes(p).arithmetic, tier(degenerate));
+        }
         let mut g = c.benchmark_group(format!("three_planes/{kind}"));
         g.throughput(Throughput::Elements(BATCH as u64));
         g.bench_function(BenchmarkId::from_parameter("f64"), |b| {
             b.iter(|| {
-                t.iter()
-                    .map(|p| black_box(intersect_three_planes_f64(black_box(p))))
-                    .count()
+                for p in &t {
+                    black_box(intersect_three_planes_f64(black_box(p)));
+                }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("certified"), |b| {
             b.iter(|| {
-                t.iter()
-                    .map(|p| black_box(intersect_three_planes(black_box(p))))
-                    .count()
+                for p in &t {
+                    black_box(intersect_three_planes(black_box(p)));
+                }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {
             b.iter(|| {
-                tq.iter()
-                    .map(|p| black_box(intersect_three_planes_exact(black_box(p))))
-                    .count()
+                for p in &tq {
+                    black_box(intersect_three_planes_exact(black_box(p)));
+                }
             })
         });
         g.finish();
@@ -194,31 +202,37 @@ fn bench(c: &mut Criterion) {
         let l = lines(degenerate);
         let lq: Vec<(Line<Rational>, Plane<Rational>)> =
             l.iter().map(|(a, p)| (ql(a), q(p))).collect();
+        for (a, p) in &l {
+            assert_eq!(
+                intersect_line_plane(Linear::Line(a), p).arithmetic,
+                tier(degenerate)
+            );
+        }
         let mut g = c.benchmark_group(format!("line_plane/{kind}"));
         g.throughput(Throughput::Elements(BATCH as u64));
         g.bench_function(BenchmarkId::from_parameter("f64"), |b| {
             b.iter(|| {
-                l.iter()
-                    .map(|(a, p)| {
+                for (a, p) in &l {
+                    black_box({
                         black_box(intersect_line_plane_f64(Linear::Line(black_box(a)), p))
-                    })
-                    .count()
+                    });
+                }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("certified"), |b| {
             b.iter(|| {
-                l.iter()
-                    .map(|(a, p)| black_box(intersect_line_plane(Linear::Line(black_box(a)), p)))
-                    .count()
+                for (a, p) in &l {
+                    black_box(intersect_line_plane(Linear::Line(black_box(a)), p));
+                }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {
             b.iter(|| {
-                lq.iter()
-                    .map(|(a, p)| {
+                for (a, p) in &lq {
+                    black_box({
                         black_box(intersect_line_plane_exact(Linear::Line(black_box(a)), p))
-                    })
-                    .count()
+                    });
+                }
             })
         });
         g.finish();
@@ -226,27 +240,30 @@ fn bench(c: &mut Criterion) {
         let pp = pairs(degenerate);
         let pq: Vec<(Plane<Rational>, Plane<Rational>)> =
             pp.iter().map(|(a, b)| (q(a), q(b))).collect();
+        for (x, y) in &pp {
+            assert_eq!(intersect_planes(x, y).arithmetic, tier(degenerate));
+        }
         let mut g = c.benchmark_group(format!("plane_plane/{kind}"));
         g.throughput(Throughput::Elements(BATCH as u64));
         g.bench_function(BenchmarkId::from_parameter("f64"), |b| {
             b.iter(|| {
-                pp.iter()
-                    .map(|(x, y)| black_box(intersect_planes_f64(black_box(x), y)))
-                    .count()
+                for (x, y) in &pp {
+                    black_box(intersect_planes_f64(black_box(x), y));
+                }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("certified"), |b| {
             b.iter(|| {
-                pp.iter()
-                    .map(|(x, y)| black_box(intersect_planes(black_box(x), y)))
-                    .count()
+                for (x, y) in &pp {
+                    black_box(intersect_planes(black_box(x), y));
+                }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {
             b.iter(|| {
-                pq.iter()
-                    .map(|(x, y)| black_box(intersect_planes_exact(black_box(x), y)))
-                    .count()
+                for (x, y) in &pq {
+                    black_box(intersect_planes_exact(black_box(x), y));
+                }
             })
         });
         g.finish();

@@ -99,9 +99,9 @@ fn rank(mut m: Vec<Vec<Q>>) -> usize {
         for i in 0..m.len() {
             if i != r && m[i][c] != 0 {
                 let f = Q::from(&m[i][c] / &m[r][c]);
-                for k in c..cols {
-                    let s = Q::from(&f * &m[r][k]);
-                    m[i][k] -= s;
+                let pivot = m[r].clone();
+                for (x, y) in m[i][c..].iter_mut().zip(&pivot[c..]) {
+                    *x -= Q::from(&f * y);
                 }
             }
         }

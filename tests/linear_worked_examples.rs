@@ -272,7 +272,7 @@ fn tiers_escalate_and_agree() {
     // dir = N₀ × N₁ = (0, 0, t⁴) ≈ 1e-680: scaled by 2^k into [1, 2) (PlaneLine docs).
     assert!(line.dir_exponent > 2000);
     let d = rug::Rational::from_f64(t).unwrap();
-    let d4 = rug::Rational::from(d.clone() * &d) * rug::Rational::from(d.clone() * &d);
+    let d4 = (d.clone() * &d) * (d.clone() * &d);
     let scaled = geocert::num::round::scale_pow2(&d4, line.dir_exponent);
     assert_eq!(line.dir[2], geocert::num::round::round_rational(&scaled));
     assert!(line.dir[2].nearest >= 1.0 && line.dir[2].nearest < 2.0);

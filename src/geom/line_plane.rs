@@ -81,6 +81,7 @@ pub(crate) struct Terms<R> {
     pub uvnum: Option<V2<R>>,
 }
 
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` after its decision
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(l: &LineData<R>, p: &PlaneData<R>) -> Terms<R> {
     let den = dot3(p.n(), &l.d);

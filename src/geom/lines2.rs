@@ -104,6 +104,7 @@ pub(crate) struct Terms<R> {
     pub pnum: V2<R>,
 }
 
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` after its decision
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(a: &Line2Data<R>, b: &Line2Data<R>) -> Terms<R> {
     terms_from(a, b, cross2(&a.d, &b.d))

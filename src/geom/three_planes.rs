@@ -88,6 +88,7 @@ pub(crate) fn det_terms<R: Ring>(p: &[PlaneData<R>; 3]) -> ([V3<R>; 3], R) {
     (c, det)
 }
 
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` after its decision
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
     let (c, det) = det_terms(p);

@@ -7,13 +7,19 @@
 //! only when the bound decides them; otherwise the caller falls through to the exact tier.
 //!
 //! Safe range: every group maximum must be at most [`SCALE_MAX`] = 2¹⁰⁰ (else the filter
-//! is skipped: no overflow is possible below it, since formulas have degree ≤ 9 and
-//! constants below 2¹⁰), and is clamped up to [`SCALE_MIN`] = 2⁻¹⁰⁰ (which bounds the
-//! effect of underflow by `3u²` per product in scaled units, see `error_bound`). NaN or ∞
-//! anywhere makes every test fail, so the exact tier answers.
+//! is skipped: formulas have degree ≤ 9, so every intermediate is at most `b·2⁹⁰⁰` with
+//! `b` the derived magnitude bound — a few thousand — far below the 2⁹⁹⁵ that Veltkamp's
+//! split and the double range allow), and is clamped up to [`SCALE_MIN`] = 2⁻¹⁰⁰ (which
+//! bounds the effect of underflow by `3u²` per product in scaled units, see
+//! `error_bound`). NaN or ∞ anywhere makes every test fail, so the exact tier answers.
+//!
+//! This is the semi-static filter of the kernel, evaluated in double-double rather than
+//! plain f64: the same pass decides the verdict (the sign of a denominator) and the
+//! correct rounding of every output, so a plain-f64 pre-filter would only add work on
+//! generic input.
 
 // `!(a <= b)` is deliberate throughout: it is true for NaN, which must fail every test.
-#![allow(clippy::neg_cmp_op_on_partial_ord)]
+#![allow(clippy::neg_cmp_op_on_partial_ord, clippy::manual_range_contains)]
 
 use std::cmp::Ordering;
 
@@ -236,9 +242,8 @@ mod tests {
             let p = Dd::<M>::from_f64(a);
             let q = Dd::<M>::from_f64(b);
             let r = round_ratio(&p, 0.0, &q, 0.0).expect("decided");
-            let truth = round_rational(&Rational::from(
-                Rational::from_f64(a).unwrap() / Rational::from_f64(b).unwrap(),
-            ));
+            let truth =
+                round_rational(&(Rational::from_f64(a).unwrap() / Rational::from_f64(b).unwrap()));
             assert_eq!(r, truth);
         }
         // An exact double result is never accepted here (the exact tier reports lo = hi).

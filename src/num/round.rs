@@ -282,7 +282,7 @@ mod tests {
         let one = Rational::from(1);
         let ulp = Rational::from_f64(f64::EPSILON).unwrap();
         let above_mid = &one + Rational::from(&ulp / 2u32) + Rational::from(&ulp / 1024u32);
-        let r = round_rational(&Rational::from(above_mid));
+        let r = round_rational(&above_mid);
         assert_eq!(r.nearest, 1.0 + f64::EPSILON);
         assert_eq!((r.lo, r.hi), (1.0, 1.0 + f64::EPSILON));
     }
@@ -290,7 +290,7 @@ mod tests {
     #[test]
     fn subnormals_overflow_and_ties() {
         let tiny = Rational::from_f64(f64::from_bits(1)).unwrap(); // 2^-1074
-        let r = round_rational(&Rational::from(&tiny * Rational::from((3, 2))));
+        let r = round_rational(&(&tiny * Rational::from((3, 2))));
         // 1.5 · 2^-1074 is a tie between 2^-1074 (odd) and 2^-1073 (even).
         assert_eq!(r.nearest, f64::from_bits(2));
         assert_eq!((r.lo, r.hi), (f64::from_bits(1), f64::from_bits(2)));
