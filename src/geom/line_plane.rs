@@ -16,11 +16,9 @@ use super::data::{LineData, Linear, PlaneData};
 use super::exact_tier::{expansion_tier, filter_certified, Rounder};
 use super::objects::Plane;
 use crate::certificate::Certified;
-use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
-use crate::num::filter::{
-    bound, extend_scale, fma_available, group_scale, round_over, Denominator,
-};
+use crate::num::filter::{bound, dispatch_fma, extend_scale, group_scale, round_over, Denominator};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{det3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
@@ -196,26 +194,7 @@ const EPS_PNUM: f64 = 2580.0 * U * U;
 const EPS_UVNUM: f64 = 1240.0 * U * U;
 
 fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "fma")]
-        unsafe fn with_fma(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
-            fast::<WithFma>(line, plane)
-        }
-        if fma_available() {
-            // SAFETY: the CPU supports FMA (checked at run time).
-            return unsafe { with_fma(line, plane) };
-        }
-        fast::<WithoutFma>(line, plane)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        if fma_available() {
-            fast::<WithFma>(line, plane)
-        } else {
-            fast::<WithoutFma>(line, plane)
-        }
-    }
+    dispatch_fma!(fast(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>>)
 }
 
 /// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's

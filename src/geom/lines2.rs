@@ -20,9 +20,9 @@ use std::cmp::Ordering;
 use super::data::{Line2Data, Linear2};
 use super::exact_tier::{expansion_tier, filter_certified, Rounder};
 use crate::certificate::Certified;
-use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
-use crate::num::filter::{bound, fma_available, group_scale, round_over, Denominator};
+use crate::num::filter::{bound, dispatch_fma, group_scale, round_over, Denominator};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross2, dot2, each, sub2, Field, Ring, V2};
 use crate::num::round::Rounded;
@@ -243,26 +243,7 @@ const EPS_T: f64 = 155.0 * U * U;
 const EPS_P: f64 = 1109.0 * U * U;
 
 fn fast_dispatch(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "fma")]
-        unsafe fn with_fma(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>> {
-            fast::<WithFma>(a, b)
-        }
-        if fma_available() {
-            // SAFETY: the CPU supports FMA (checked at run time).
-            return unsafe { with_fma(a, b) };
-        }
-        fast::<WithoutFma>(a, b)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        if fma_available() {
-            fast::<WithFma>(a, b)
-        } else {
-            fast::<WithoutFma>(a, b)
-        }
-    }
+    dispatch_fma!(fast(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>>)
 }
 
 /// Scales `(positions, direction)` of a 2D linear object.

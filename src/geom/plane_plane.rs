@@ -25,10 +25,10 @@ use super::data::PlaneData;
 use super::exact_tier::{expansion_tier, filter_certified, ExpansionRounder, Rounder};
 use super::objects::Plane;
 use crate::certificate::Certified;
-use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{
-    bound, extend_scale, fma_available, group_scale, round_over, round_value, Denominator,
+    bound, dispatch_fma, extend_scale, group_scale, round_over, round_value, Denominator,
 };
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
@@ -319,26 +319,7 @@ pub(crate) fn plane_scales(p: &Plane<f64>, mp: f64) -> Option<(f64, f64, f64)> {
 }
 
 fn fast_dispatch(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "fma")]
-        unsafe fn with_fma(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-            fast::<WithFma>(a, b)
-        }
-        if fma_available() {
-            // SAFETY: the CPU supports FMA (checked at run time).
-            return unsafe { with_fma(a, b) };
-        }
-        fast::<WithoutFma>(a, b)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        if fma_available() {
-            fast::<WithFma>(a, b)
-        } else {
-            fast::<WithoutFma>(a, b)
-        }
-    }
+    dispatch_fma!(fast(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>>)
 }
 
 /// The filter tier: groups `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees

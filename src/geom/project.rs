@@ -24,9 +24,9 @@ use super::data::{Lift, LineData, Linear, PlaneData};
 use super::exact_tier::{filter_certified, Rounder};
 use super::objects::Plane;
 use crate::certificate::Certified;
-use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::filter::{
-    bound, extend_scale, fma_available, group_scale, round_over, sign_of, Denominator, SCALE_MIN,
+    bound, dispatch_fma, extend_scale, group_scale, round_over, sign_of, Denominator, SCALE_MIN,
 };
 use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::{sqrt_rational, Rounded};
@@ -384,58 +384,14 @@ fn fast_line_dispatch(
     p: &Vector3<f64>,
     line: Linear<f64>,
 ) -> Option<LineProjection<Rounded, Rounded>> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "fma")]
-        unsafe fn with_fma(
-            p: &Vector3<f64>,
-            line: Linear<f64>,
-        ) -> Option<LineProjection<Rounded, Rounded>> {
-            fast_line::<WithFma>(p, line)
-        }
-        if fma_available() {
-            // SAFETY: the CPU supports FMA (checked at run time).
-            return unsafe { with_fma(p, line) };
-        }
-        fast_line::<WithoutFma>(p, line)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        if fma_available() {
-            fast_line::<WithFma>(p, line)
-        } else {
-            fast_line::<WithoutFma>(p, line)
-        }
-    }
+    dispatch_fma!(fast_line(p: &Vector3<f64>, line: Linear<f64>,) -> Option<LineProjection<Rounded, Rounded>>)
 }
 
 fn fast_plane_dispatch(
     p: &Vector3<f64>,
     plane: &Plane<f64>,
 ) -> Option<PlaneProjection<Rounded, Rounded>> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "fma")]
-        unsafe fn with_fma(
-            p: &Vector3<f64>,
-            plane: &Plane<f64>,
-        ) -> Option<PlaneProjection<Rounded, Rounded>> {
-            fast_plane::<WithFma>(p, plane)
-        }
-        if fma_available() {
-            // SAFETY: the CPU supports FMA (checked at run time).
-            return unsafe { with_fma(p, plane) };
-        }
-        fast_plane::<WithoutFma>(p, plane)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        if fma_available() {
-            fast_plane::<WithFma>(p, plane)
-        } else {
-            fast_plane::<WithoutFma>(p, plane)
-        }
-    }
+    dispatch_fma!(fast_plane(p: &Vector3<f64>, plane: &Plane<f64>,) -> Option<PlaneProjection<Rounded, Rounded>>)
 }
 
 /// Filter tier for point → line when the stationary foot is inside the domain. Groups:

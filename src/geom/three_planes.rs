@@ -27,9 +27,9 @@ use super::exact_tier::{expansion_tier, filter_certified, Rounder};
 use super::objects::Plane;
 use super::plane_plane::{line_of, plane_scales, round_line, round_line_expansion, PlaneLine};
 use crate::certificate::Certified;
-use crate::num::dd::{Dd, ProductMode, WithFma, WithoutFma, U};
+use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
-use crate::num::filter::{bound, fma_available, round_over, Denominator, SCALE_MIN};
+use crate::num::filter::{bound, dispatch_fma, round_over, Denominator, SCALE_MIN};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
@@ -239,26 +239,7 @@ const EPS_PNUM: f64 = 66138.0 * U * U;
 const EPS_PARAM: f64 = 20027.0 * U * U;
 
 fn fast_dispatch(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "fma")]
-        unsafe fn with_fma(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
-            fast::<WithFma>(p)
-        }
-        if fma_available() {
-            // SAFETY: the CPU supports FMA (checked at run time).
-            return unsafe { with_fma(p) };
-        }
-        fast::<WithoutFma>(p)
-    }
-    #[cfg(not(target_arch = "x86_64"))]
-    {
-        if fma_available() {
-            fast::<WithFma>(p)
-        } else {
-            fast::<WithoutFma>(p)
-        }
-    }
+    dispatch_fma!(fast(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>>)
 }
 
 /// The filter tier (point case only). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`,

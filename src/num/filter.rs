@@ -211,6 +211,35 @@ pub fn round_value<M: ProductMode>(p: &Dd<M>, ep: f64) -> Option<Rounded> {
     round_ratio(p, ep, &Dd::from_f64(1.0), 0.0)
 }
 
+/// Call `$fast::<WithFma>` through a function compiled with FMA enabled when the CPU has
+/// it (x86-64: runtime detection; AArch64: always), else `$fast::<WithoutFma>`. No
+/// compile flag is needed: the FMA instance lives in a `#[target_feature]` function, and
+/// the generic formulas are `#[inline(always)]` so that they are compiled inside it.
+macro_rules! dispatch_fma {
+    ($fast:ident($($arg:ident: $ty:ty),* $(,)?) -> $ret:ty) => {{
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "fma")]
+        unsafe fn with_fma($($arg: $ty),*) -> $ret {
+            $fast::<$crate::num::dd::WithFma>($($arg),*)
+        }
+        #[cfg(target_arch = "x86_64")]
+        let r = if $crate::num::filter::fma_available() {
+            // SAFETY: the CPU supports FMA (checked at run time).
+            unsafe { with_fma($($arg),*) }
+        } else {
+            $fast::<$crate::num::dd::WithoutFma>($($arg),*)
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let r = if $crate::num::filter::fma_available() {
+            $fast::<$crate::num::dd::WithFma>($($arg),*)
+        } else {
+            $fast::<$crate::num::dd::WithoutFma>($($arg),*)
+        };
+        r
+    }};
+}
+pub(crate) use dispatch_fma;
+
 /// True when the FMA instruction can be used (runtime detection on x86-64; always on
 /// AArch64, where it is part of the base instruction set).
 #[inline(always)]
