@@ -246,6 +246,9 @@ impl Expansion {
             }
             q = q2;
         }
+        if !q.is_finite() {
+            Poison::set();
+        }
         if q != 0.0 {
             h.push(q);
         }

@@ -139,7 +139,8 @@ const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
 /// `(s, t) = two_sum(p.h, −m)` (exact), `r_l = (t + p.l) − e'` (error
 /// `≤ u|t + p.l| + u|r_l|`) and `R̂ = s + r_l` (error `≤ u|R̂|`): so
 /// `|R − R̂| ≤ ep + |c|·eq + u(|c q.l| + |e'| + |t + p.l| + |r_l|) + u|R̂|`, taken with a
-/// `(1 + 8u)` margin for the rounding of the bound itself and `4η` for underflow.
+/// `(1 + 16u)` margin for the (at most nine) roundings of the bound itself and `8η` for
+/// underflow in the residual and in the bound.
 /// Accepted only for `2⁻⁹⁰⁰ ≤ |p.h|, |q.h| ≤ 2¹⁰⁰⁰` and `2⁻⁹⁶⁰ ≤ |c| ≤ 2¹⁰⁰⁰`, so that no
 /// quantity of the test underflows or overflows and half an ulp of `c` is a normal double.
 #[inline(always)]
@@ -168,8 +169,8 @@ pub fn round_over<M: ProductMode>(p: &Dd<M>, ep: f64, d: &Denominator<M>) -> Opt
     let rl = tl - e2;
     let r = s + rl;
     let er = (ep + ca * eq + U * (ca * q.l.abs() + e2.abs() + tl.abs() + rl.abs() + r.abs()))
-        * (1.0 + 8.0 * U)
-        + 4.0 * ETA;
+        * (1.0 + 16.0 * U)
+        + 8.0 * ETA;
     // Half the smaller gap next to c: half an ulp, or a quarter at a power of two.
     let bits = c.to_bits();
     let biased = (bits >> 52) & 0x7ff;
@@ -179,7 +180,7 @@ pub fn round_over<M: ProductMode>(p: &Dd<M>, ep: f64, d: &Denominator<M>) -> Opt
     } else {
         half_ulp
     };
-    let cell = half_gap * q_lo * (1.0 - 2.0 * U);
+    let cell = half_gap * q_lo * (1.0 - 4.0 * U);
     if !(add_up(r.abs(), er) < cell) {
         return None;
     }
