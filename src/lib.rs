@@ -11,6 +11,7 @@
 
 pub mod certificate;
 pub mod error;
+pub mod geom;
 pub mod io;
 pub mod num;
 #[cfg(feature = "cgal")]

@@ -2,12 +2,21 @@
 //! filters, f64 intervals with outward rounding, MPFR intervals, exact rationals and
 //! correctly rounded conversion to f64.
 
+pub mod dd;
+pub mod error_bound;
+pub mod expansion;
+pub mod filter;
 pub mod interval;
 pub mod interval_like;
 pub mod mpfr_interval;
+pub mod parse;
+pub mod ratio;
 pub mod real;
+pub mod ring;
+pub mod round;
 
 pub use interval::Interval;
 pub use interval_like::IntervalLike;
 pub use mpfr_interval::MpfrInterval;
 pub use real::Real;
+pub use round::Rounded;

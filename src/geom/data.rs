@@ -1,0 +1,227 @@
+//! The objects lifted into a ring (`f64`, double-double, error bounds, rationals): the
+//! form every formula of the kernel reads. A segment becomes the line `a + t(b − a)`,
+//! `t ∈ [0, 1]`; a parametric plane gets its normal `N = u × v` (unnormalised,
+//! OPERATIONS.md §3.3 eq. (3.5) before the division), an implicit plane keeps `normal`.
+
+use nalgebra::{Vector2, Vector3};
+use rug::Rational;
+
+use super::objects::{Coord, Line, Line2, Plane, Segment, Segment2};
+use crate::num::dd::{Dd, ProductMode};
+use crate::num::expansion::Expansion;
+use crate::num::ratio::Ratio;
+use crate::num::ring::{cross3, dot3, sub2, sub3, Field, Ring, V2, V3};
+
+/// Conversion of an input coordinate into a ring (exact for every pair used).
+pub trait Lift<R> {
+    fn lift(&self) -> R;
+}
+impl Lift<f64> for f64 {
+    #[inline(always)]
+    fn lift(&self) -> f64 {
+        *self
+    }
+}
+impl Lift<Rational> for f64 {
+    fn lift(&self) -> Rational {
+        <Rational as Field>::from_f64(*self)
+    }
+}
+impl Lift<Rational> for Rational {
+    fn lift(&self) -> Rational {
+        self.clone()
+    }
+}
+impl Lift<Ratio<Expansion>> for f64 {
+    fn lift(&self) -> Ratio<Expansion> {
+        <Ratio<Expansion> as Field>::from_f64(*self)
+    }
+}
+impl<M: ProductMode> Lift<Dd<M>> for f64 {
+    #[inline(always)]
+    fn lift(&self) -> Dd<M> {
+        Dd::from_f64(*self)
+    }
+}
+
+#[inline(always)]
+pub(crate) fn lift3<T: Lift<R>, R>(v: &Vector3<T>) -> V3<R> {
+    [v[0].lift(), v[1].lift(), v[2].lift()]
+}
+#[inline(always)]
+pub(crate) fn lift2<T: Lift<R>, R>(v: &Vector2<T>) -> V2<R> {
+    [v[0].lift(), v[1].lift()]
+}
+
+/// A 3D line in a ring: `o + t·d`, `t ∈ range` (closed) or unbounded.
+#[derive(Debug, Clone)]
+pub(crate) struct LineData<R> {
+    pub o: V3<R>,
+    pub d: V3<R>,
+    pub range: Option<[R; 2]>,
+}
+
+/// A 2D line in a ring.
+#[derive(Debug, Clone)]
+pub(crate) struct Line2Data<R> {
+    pub o: V2<R>,
+    pub d: V2<R>,
+    pub range: Option<[R; 2]>,
+}
+
+/// A 3D linear object with a parameter: a line (maybe ranged) or a segment.
+#[derive(Debug)]
+pub enum Linear<'a, T: Coord> {
+    Line(&'a Line<T>),
+    Segment(&'a Segment<T>),
+}
+
+/// A 2D linear object with a parameter.
+#[derive(Debug)]
+pub enum Linear2<'a, T: Coord> {
+    Line(&'a Line2<T>),
+    Segment(&'a Segment2<T>),
+}
+
+// Copy for every coordinate type (the enums only hold references).
+impl<T: Coord> Clone for Linear<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T: Coord> Copy for Linear<'_, T> {}
+impl<T: Coord> Clone for Linear2<'_, T> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<T: Coord> Copy for Linear2<'_, T> {}
+
+impl<'a, T: Coord> Linear<'a, T> {
+    #[inline(always)]
+    pub(crate) fn data<R: Ring>(&self) -> LineData<R>
+    where
+        T: Lift<R>,
+    {
+        match self {
+            Linear::Line(l) => LineData {
+                o: lift3(l.origin()),
+                d: lift3(l.dir()),
+                range: l.range().map(|[a, b]| [a.lift(), b.lift()]),
+            },
+            Linear::Segment(s) => {
+                let a = lift3(s.a());
+                let d = sub3(&lift3(s.b()), &a);
+                LineData {
+                    o: a,
+                    d,
+                    range: Some(unit_range()),
+                }
+            }
+        }
+    }
+}
+
+impl<'a, T: Coord> Linear2<'a, T> {
+    #[inline(always)]
+    pub(crate) fn data<R: Ring>(&self) -> Line2Data<R>
+    where
+        T: Lift<R>,
+    {
+        match self {
+            Linear2::Line(l) => Line2Data {
+                o: lift2(l.origin()),
+                d: lift2(l.dir()),
+                range: l.range().map(|[a, b]| [a.lift(), b.lift()]),
+            },
+            Linear2::Segment(s) => {
+                let a = lift2(s.a());
+                let d = sub2(&lift2(s.b()), &a);
+                Line2Data {
+                    o: a,
+                    d,
+                    range: Some(unit_range()),
+                }
+            }
+        }
+    }
+}
+
+/// `[0, 1]` in any ring (built from the additive identity and `0 − (0 − 1)`-free ops).
+#[inline(always)]
+pub(crate) fn unit_range<R: Ring>() -> [R; 2] {
+    [R::zero(), one::<R>()]
+}
+
+/// 1 in any ring the kernel uses (only rings with exact small integers reach here).
+#[inline(always)]
+pub(crate) fn one<R: Ring>() -> R {
+    R::one()
+}
+
+/// A plane in a ring with its normal `n` (`u × v` or the given normal).
+#[derive(Debug, Clone)]
+pub(crate) enum PlaneData<R> {
+    Param {
+        o: V3<R>,
+        u: V3<R>,
+        v: V3<R>,
+        n: V3<R>,
+    },
+    Implicit {
+        n: V3<R>,
+        d: R,
+    },
+}
+
+impl<R: Ring> PlaneData<R> {
+    #[inline(always)]
+    pub(crate) fn new<T: Coord + Lift<R>>(p: &Plane<T>) -> Self {
+        match p {
+            Plane::Parametric { origin, u, v } => {
+                let (u, v) = (lift3(u), lift3(v));
+                let n = cross3(&u, &v);
+                PlaneData::Param {
+                    o: lift3(origin),
+                    u,
+                    v,
+                    n,
+                }
+            }
+            Plane::Implicit { normal, d } => PlaneData::Implicit {
+                n: lift3(normal),
+                d: d.lift(),
+            },
+        }
+    }
+    /// The (unnormalised) normal `N`.
+    #[inline(always)]
+    pub(crate) fn n(&self) -> &V3<R> {
+        match self {
+            PlaneData::Param { n, .. } | PlaneData::Implicit { n, .. } => n,
+        }
+    }
+    /// `f(x) = N·(x − o)` or `n·x + d`: zero exactly on the plane, `N·x − h`.
+    #[inline(always)]
+    pub(crate) fn value_at(&self, x: &V3<R>) -> R {
+        match self {
+            PlaneData::Param { o, n, .. } => dot3(n, &sub3(x, o)),
+            PlaneData::Implicit { n, d } => dot3(n, x).plus(d),
+        }
+    }
+    /// `h` with the plane `N·x = h`.
+    pub(crate) fn offset(&self) -> R {
+        match self {
+            PlaneData::Param { o, n, .. } => dot3(n, o),
+            PlaneData::Implicit { d, .. } => d.negate(),
+        }
+    }
+    /// The origin of a parametric plane.
+    #[inline(always)]
+    pub(crate) fn origin(&self) -> Option<&V3<R>> {
+        match self {
+            PlaneData::Param { o, .. } => Some(o),
+            PlaneData::Implicit { .. } => None,
+        }
+    }
+}

@@ -1,0 +1,327 @@
+//! Line (ranged line, segment) ∩ plane, OPERATIONS.md §5.1.
+//!
+//! With `N` the plane's unnormalised normal and `f(x) = N·(x − o)` (or `n·x + d`), the
+//! carrier `c(t) = c₀ + t c'` meets the plane where `f(c₀) + t N·c' = 0`, i.e. eq. (5.1)
+//! with the normalisation of `n̂` cancelled:
+//! `t = −f(c₀)/(N·c')`, `p = (c₀ (N·c') − f(c₀) c')/(N·c')`. The plane parameters follow
+//! from Cramer's rule on `u·s₁ + v·s₂ − t c' = c₀ − s₀` (equivalent to (3.7)–(3.8) for a
+//! point of the plane, with a lower degree): `u = det(w, s₂, c')/(N·c')`,
+//! `v = det(s₁, w, c')/(N·c')`, `w = c₀ − s₀`, since `det(s₁, s₂, c') = N·c'`.
+//! `N·c' = 0` exactly: `Contained` if `f(c₀) = 0`, else `Parallel`.
+
+use nalgebra::{Scalar, Vector2, Vector3};
+use rug::Rational;
+
+use super::data::{LineData, Linear, PlaneData};
+use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::objects::Plane;
+use crate::certificate::Certified;
+use crate::num::dd::{Dd, ProductMode, U};
+use crate::num::expansion::Expansion;
+use crate::num::filter::{bound, dispatch_fma, extend_scale, group_scale, round_over, Denominator};
+use crate::num::ratio::Ratio;
+use crate::num::ring::{det3, dot3, each, sub3, Field, Ring, V2, V3};
+use crate::num::round::Rounded;
+
+/// Where a line meets a plane: the point, the line parameter `t` and, for a parametric
+/// plane, the plane parameters `(u, v)`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LinePlanePoint<S> {
+    pub point: Vector3<S>,
+    pub t: S,
+    pub uv: Option<Vector2<S>>,
+}
+
+/// The result of line ∩ plane.
+#[derive(Debug, Clone, PartialEq)]
+pub enum LinePlane<S> {
+    /// One point, inside the line's domain.
+    Point(LinePlanePoint<S>),
+    /// The carrier is parallel to the plane and off it: empty.
+    Parallel,
+    /// The whole line (segment, ranged line) lies in the plane.
+    Contained,
+    /// Empty: the carrier meets the plane at this point, outside the line's domain.
+    OutsideDomain(LinePlanePoint<S>),
+}
+
+impl<S: Scalar> LinePlanePoint<S> {
+    fn map<T: Scalar>(self, mut f: impl FnMut(S) -> T) -> LinePlanePoint<T> {
+        LinePlanePoint {
+            point: self.point.map(&mut f),
+            t: f(self.t),
+            uv: self.uv.map(|uv| uv.map(&mut f)),
+        }
+    }
+}
+
+impl<S: Scalar> LinePlane<S> {
+    /// Apply `f` to every number of the result.
+    pub fn map<T: Scalar>(self, f: impl FnMut(S) -> T) -> LinePlane<T> {
+        match self {
+            LinePlane::Point(p) => LinePlane::Point(p.map(f)),
+            LinePlane::OutsideDomain(p) => LinePlane::OutsideDomain(p.map(f)),
+            LinePlane::Parallel => LinePlane::Parallel,
+            LinePlane::Contained => LinePlane::Contained,
+        }
+    }
+}
+
+/// The polynomials of the operation (written once for every ring).
+pub(crate) struct Terms<R> {
+    /// `N·c'`: the common denominator.
+    pub den: R,
+    /// `f(c₀)`.
+    pub f0: R,
+    /// Numerators of the point: `c₀ (N·c') − f(c₀) c'`.
+    pub pnum: V3<R>,
+    /// Numerators of `(u, v)`: `det(w, s₂, c')`, `det(s₁, w, c')`.
+    pub uvnum: Option<V2<R>>,
+}
+
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` after its decision
+#[inline(always)]
+pub(crate) fn terms<R: Ring>(l: &LineData<R>, p: &PlaneData<R>) -> Terms<R> {
+    let den = dot3(p.n(), &l.d);
+    let f0 = p.value_at(&l.o);
+    terms_from(l, p, den, f0)
+}
+
+/// The numerators given `N·c'` and `f(c₀)`.
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(l: &LineData<R>, p: &PlaneData<R>, den: R, f0: R) -> Terms<R> {
+    let pnum = each!(i in [0, 1, 2] => l.o[i].times(&den).minus(&f0.times(&l.d[i])));
+    let uvnum = match p {
+        PlaneData::Param { o, u, v, .. } => {
+            let w = sub3(&l.o, o);
+            Some([det3(&w, v, &l.d), det3(u, &w, &l.d)])
+        }
+        PlaneData::Implicit { .. } => None,
+    };
+    Terms {
+        den,
+        f0,
+        pnum,
+        uvnum,
+    }
+}
+
+fn in_range<R: Field>(t: &R, range: &Option<[R; 2]>) -> bool {
+    match range {
+        None => true,
+        Some([a, b]) => t.compare(a).is_ge() && t.compare(b).is_le(),
+    }
+}
+
+/// The exact decision procedure, generic over the field (`f64`: plain; `Rational`: exact).
+pub(crate) fn core<R: Field>(l: &LineData<R>, p: &PlaneData<R>) -> LinePlane<R> {
+    let den = dot3(p.n(), &l.d);
+    let f0 = p.value_at(&l.o);
+    if den.is_zero() {
+        return if f0.is_zero() {
+            LinePlane::Contained
+        } else {
+            LinePlane::Parallel
+        };
+    }
+    let tm = terms_from(l, p, den, f0);
+    let t = tm.f0.negate().divide(&tm.den);
+    let inside = in_range(&t, &l.range);
+    let [x, y, z] = tm.pnum.map(|q| q.divide(&tm.den));
+    let point = LinePlanePoint {
+        point: Vector3::new(x, y, z),
+        t,
+        uv: tm
+            .uvnum
+            .map(|[u, v]| Vector2::new(u.divide(&tm.den), v.divide(&tm.den))),
+    };
+    if inside {
+        LinePlane::Point(point)
+    } else {
+        LinePlane::OutsideDomain(point)
+    }
+}
+
+/// Plain f64 (uncertified; `N·c' == 0.0` decides parallelism).
+pub fn intersect_line_plane_f64(line: Linear<f64>, plane: &Plane<f64>) -> LinePlane<f64> {
+    core::<f64>(&line.data(), &PlaneData::new(plane))
+}
+
+/// Exact, on rational inputs.
+pub fn intersect_line_plane_exact(
+    line: Linear<Rational>,
+    plane: &Plane<Rational>,
+) -> LinePlane<Rational> {
+    core::<Rational>(&line.data(), &PlaneData::new(plane))
+}
+
+/// Certified: the exact verdict for the double inputs, coordinates correctly rounded
+/// with enclosures. Tiers: the double-double filter (generic input), then rationals.
+pub fn intersect_line_plane(
+    line: Linear<f64>,
+    plane: &Plane<f64>,
+) -> Certified<LinePlane<Rounded>> {
+    if let Some(r) = fast_dispatch(line, plane) {
+        return filter_certified(r);
+    }
+    if let Some(c) = expansion_tier(|r| {
+        let l: LineData<Ratio<Expansion>> = line.data();
+        core(&l, &PlaneData::new(plane)).map(|q| r.round(q))
+    }) {
+        return c;
+    }
+    let l: LineData<Rational> = line.data();
+    let p: PlaneData<Rational> = PlaneData::new(plane);
+    let mut rounder = Rounder::default();
+    let r = core(&l, &p).map(|q| rounder.round(q));
+    rounder.certify(r)
+}
+
+/// Filter constants, as `k·u²`, re-derived by `tests::filter_constants`: each is the
+/// [`crate::num::error_bound::ErrorBound`] bound of the formula in [`terms`] for inputs
+/// bounded by 1, maximised over a line or a segment and a parametric or implicit plane,
+/// rounded up. Derivation of the first, to first order in u, with the rules of
+/// `error_bound` (worst case: parametric plane, segment): a product of two inputs has
+/// `e' = u`, `|l| ≤ u`, error `u·u + u·u + 3u² = 5u²`; `N = u × v`: the subtraction adds
+/// `u(2u + u) + u·4u = 7u²`, so `e_N = 17u²`, `|N_i| ≤ 2`, `|l| ≤ 4u`; the segment's
+/// `c' = b − a`: `|c'_i| ≤ 2`, `|l| ≤ 2u`, `e = 4u²`; each product `N_i c'_i` propagates
+/// `17u²·2 + 4u²·2 = 42u²` and adds `u·2·2u + u·e' + u·4u·2 + u·l + 8u² + 3u²` with
+/// `e' = 4u + 4u`, `l = 8u + 8u`, i.e. `4 + 8 + 8 + 16 + 8 + 3 = 47u²`: 89u² each, with
+/// `|·| ≤ 4`, `|l| ≤ 16u`; the two additions add `u(4u·… )` terms for the remaining
+/// `451 − 3·89 = 184u²`. The test evaluates exactly these rules.
+const EPS_DEN: f64 = 452.0 * U * U;
+const EPS_PNUM: f64 = 2580.0 * U * U;
+const EPS_UVNUM: f64 = 1240.0 * U * U;
+
+fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+    dispatch_fma!(fast(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>>)
+}
+
+/// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's
+/// origin, an implicit plane's `|d|/m_n`), the line direction `L` (`P` for a segment,
+/// whose direction is `b − a`), the plane vectors `G` (`u`, `v`, or the normal). Degrees
+/// (`k = 2` parametric, `1` implicit): `N·c'`: `G^k L`; point numerators: `P G^k L`;
+/// `(u, v)` numerators: `P G L` over `G² L`.
+#[inline(always)]
+fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+    let (mut mp, ml) = match line {
+        Linear::Line(l) => (
+            group_scale(l.origin().as_slice())?,
+            group_scale(l.dir().as_slice())?,
+        ),
+        Linear::Segment(s) => {
+            let m = group_scale(s.a().as_slice())?.max(group_scale(s.b().as_slice())?);
+            (m, m)
+        }
+    };
+    let (mg, k2) = match plane {
+        Plane::Parametric { origin, u, v } => {
+            mp = mp.max(group_scale(origin.as_slice())?);
+            (
+                group_scale(u.as_slice())?.max(group_scale(v.as_slice())?),
+                true,
+            )
+        }
+        Plane::Implicit { normal, d } => {
+            let mg = group_scale(normal.as_slice())?;
+            mp = extend_scale(Some(mp), *d, mg)?;
+            (mg, false)
+        }
+    };
+    let gk = if k2 { mg * mg } else { mg };
+    let l: LineData<Dd<M>> = line.data();
+    let p: PlaneData<Dd<M>> = PlaneData::new(plane);
+    // The decision first: preparing N·c' proves it non-zero.
+    let d = dot3(p.n(), &l.d);
+    let e_den = bound(EPS_DEN, &[gk, ml]);
+    let den = Denominator::new(&d, e_den)?;
+    let tm = terms_from(&l, &p, d, p.value_at(&l.o));
+    let e_pnum = bound(EPS_PNUM, &[mp, gk, ml]);
+    let e_f0 = bound(EPS_PNUM, &[mp, gk]);
+    let t = round_over(&tm.f0.negate(), e_f0, &den)?;
+    let point = [
+        round_over(&tm.pnum[0], e_pnum, &den)?,
+        round_over(&tm.pnum[1], e_pnum, &den)?,
+        round_over(&tm.pnum[2], e_pnum, &den)?,
+    ];
+    let uv = match &tm.uvnum {
+        Some([un, vn]) => {
+            let e_uv = bound(EPS_UVNUM, &[mp, mg, ml]);
+            Some(Vector2::new(
+                round_over(un, e_uv, &den)?,
+                round_over(vn, e_uv, &den)?,
+            ))
+        }
+        None => None,
+    };
+    let inside = match line {
+        Linear::Line(l) => match l.range() {
+            None => true,
+            Some([a, b]) => t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le(),
+        },
+        Linear::Segment(_) => t.compare_f64(0.0).is_ge() && t.compare_f64(1.0).is_le(),
+    };
+    let pt = LinePlanePoint {
+        point: Vector3::from(point),
+        t,
+        uv,
+    };
+    Some(if inside {
+        LinePlane::Point(pt)
+    } else {
+        LinePlane::OutsideDomain(pt)
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::error_bound::ErrorBound;
+
+    /// Derive the filter constants from the formulas and check the written ones cover them.
+    #[test]
+    fn filter_constants() {
+        let i = ErrorBound::INPUT;
+        let lines = [
+            LineData {
+                o: [i; 3],
+                d: [i; 3],
+                range: None,
+            },
+            LineData {
+                o: [i; 3],
+                d: [i.minus(&i); 3],
+                range: None,
+            },
+        ];
+        let planes = [
+            PlaneData::Param {
+                o: [i; 3],
+                u: [i; 3],
+                v: [i; 3],
+                n: crate::num::ring::cross3(&[i; 3], &[i; 3]),
+            },
+            PlaneData::Implicit { n: [i; 3], d: i },
+        ];
+        let mut worst = [ErrorBound::zero(); 4];
+        for l in &lines {
+            for p in &planes {
+                let t = terms(l, p);
+                worst[0] = worst[0].max(t.den);
+                worst[1] = worst[1].max(t.pnum[0]).max(t.f0);
+                if let Some([u, v]) = t.uvnum {
+                    worst[2] = worst[2].max(u).max(v);
+                }
+            }
+        }
+        println!("derived (u²): {:?}", worst.map(|w| w.e_in_u2()));
+        for (w, c) in worst.iter().zip([EPS_DEN, EPS_PNUM, EPS_UVNUM]) {
+            assert!(
+                c >= w.e,
+                "constant {} u² below the derived {} u²",
+                c / (U * U),
+                w.e_in_u2()
+            );
+        }
+    }
+}

@@ -1,0 +1,279 @@
+//! Linear objects (CASES.md "Objects"; OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8),
+//! generic over the coordinate type: `f64` (each double taken as an exact value) or
+//! `rug::Rational` (exact inputs, e.g. from `"p/q"` strings). Constructors validate and
+//! never normalise or round: a zero direction, collinear plane vectors (decided exactly),
+//! a zero normal, an inverted range, a degenerate segment and non-finite numbers are
+//! typed errors naming the field.
+
+use nalgebra::{Vector2, Vector3};
+use rug::Rational;
+use std::fmt::Debug;
+
+use crate::error::{require_finite, GeomError};
+use crate::num::dd::{ProductMode, WithoutFma};
+use crate::num::ring::{cross3, Field};
+
+/// A coordinate type of the public API: `f64` or `rug::Rational`.
+pub trait Coord: Clone + PartialEq + Debug + 'static {
+    /// Reject NaN and infinities (always fine for rationals).
+    fn check_finite(&self, field: &str) -> Result<(), GeomError>;
+    /// The exact value.
+    fn to_rational(&self) -> Rational;
+    /// Exactly zero.
+    fn is_zero(&self) -> bool;
+    /// Exactly `self ≤ other`.
+    fn le(&self, other: &Self) -> bool;
+    /// Whether the cross product of two vectors is exactly zero.
+    fn cross_is_zero(a: &Vector3<Self>, b: &Vector3<Self>) -> bool;
+}
+
+impl Coord for f64 {
+    fn check_finite(&self, field: &str) -> Result<(), GeomError> {
+        require_finite(field, *self).map(|_| ())
+    }
+    fn to_rational(&self) -> Rational {
+        <Rational as Field>::from_f64(*self)
+    }
+    fn is_zero(&self) -> bool {
+        *self == 0.0
+    }
+    fn le(&self, other: &Self) -> bool {
+        self <= other
+    }
+    /// Exact: `a_i b_j == a_j b_i` compared as error-free products `(p, e)` (unique
+    /// representations of the exact products) when every factor lies in
+    /// `[2⁻⁴⁸⁰, 2⁴⁸⁰]` or is zero; in rationals otherwise.
+    fn cross_is_zero(a: &Vector3<f64>, b: &Vector3<f64>) -> bool {
+        let safe =
+            |x: f64| x == 0.0 || (x.abs() >= 1.0 / 2f64.powi(480) && x.abs() <= 2f64.powi(480));
+        if a.iter().chain(b.iter()).all(|&x| safe(x)) {
+            let eq = |i: usize, j: usize| {
+                WithoutFma::two_prod(a[i], b[j]) == WithoutFma::two_prod(a[j], b[i])
+            };
+            eq(1, 2) && eq(2, 0) && eq(0, 1)
+        } else {
+            let q = |v: &Vector3<f64>| [v[0].to_rational(), v[1].to_rational(), v[2].to_rational()];
+            cross3(&q(a), &q(b)).iter().all(|x| x.cmp0().is_eq())
+        }
+    }
+}
+
+impl Coord for Rational {
+    fn check_finite(&self, _field: &str) -> Result<(), GeomError> {
+        Ok(())
+    }
+    fn to_rational(&self) -> Rational {
+        self.clone()
+    }
+    fn is_zero(&self) -> bool {
+        self.cmp0().is_eq()
+    }
+    fn le(&self, other: &Self) -> bool {
+        self <= other
+    }
+    fn cross_is_zero(a: &Vector3<Rational>, b: &Vector3<Rational>) -> bool {
+        let q = |v: &Vector3<Rational>| [v[0].clone(), v[1].clone(), v[2].clone()];
+        cross3(&q(a), &q(b)).iter().all(|x| x.cmp0().is_eq())
+    }
+}
+
+fn check_vec<T: Coord>(field: &str, v: &[T]) -> Result<(), GeomError> {
+    for (i, x) in v.iter().enumerate() {
+        // The field path is formatted only for the error (no allocation otherwise).
+        if x.check_finite("").is_err() {
+            x.check_finite(&format!("{field}[{i}]"))?;
+        }
+    }
+    Ok(())
+}
+
+fn nonzero<T: Coord>(field: &str, v: &[T]) -> Result<(), GeomError> {
+    if v.iter().all(|x| x.is_zero()) {
+        Err(GeomError::ZeroDirection {
+            field: field.to_string(),
+        })
+    } else {
+        Ok(())
+    }
+}
+
+fn check_range<T: Coord>(range: &Option<[T; 2]>) -> Result<(), GeomError> {
+    if let Some([lo, hi]) = range {
+        lo.check_finite("range[0]")?;
+        hi.check_finite("range[1]")?;
+        if !lo.le(hi) {
+            return Err(GeomError::EmptyDomain {
+                field: "range".into(),
+                lo: format!("{lo:?}"),
+                hi: format!("{hi:?}"),
+            });
+        }
+    }
+    Ok(())
+}
+
+/// A line `c(t) = origin + t·dir` (OPERATIONS.md §3.1), optionally restricted to
+/// `t ∈ range` (closed).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Line<T: Coord> {
+    origin: Vector3<T>,
+    dir: Vector3<T>,
+    range: Option<[T; 2]>,
+}
+
+impl<T: Coord> Line<T> {
+    /// An unbounded line. Errors: `non_finite` (`origin[i]`, `dir[i]`), `zero_direction` (`dir`).
+    pub fn new(origin: Vector3<T>, dir: Vector3<T>) -> Result<Self, GeomError> {
+        Self::with_range(origin, dir, None)
+    }
+    /// A line restricted to `t ∈ [range[0], range[1]]`; also `empty_domain` (`range`)
+    /// when `range[0] > range[1]`.
+    pub fn with_range(
+        origin: Vector3<T>,
+        dir: Vector3<T>,
+        range: Option<[T; 2]>,
+    ) -> Result<Self, GeomError> {
+        check_vec("origin", origin.as_slice())?;
+        check_vec("dir", dir.as_slice())?;
+        nonzero("dir", dir.as_slice())?;
+        check_range(&range)?;
+        Ok(Line { origin, dir, range })
+    }
+    pub fn origin(&self) -> &Vector3<T> {
+        &self.origin
+    }
+    pub fn dir(&self) -> &Vector3<T> {
+        &self.dir
+    }
+    pub fn range(&self) -> Option<&[T; 2]> {
+        self.range.as_ref()
+    }
+}
+
+/// A segment `c(t) = (1 − t)·a + t·b`, `t ∈ [0, 1]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment<T: Coord> {
+    a: Vector3<T>,
+    b: Vector3<T>,
+}
+
+impl<T: Coord> Segment<T> {
+    /// Errors: `non_finite` (`a[i]`, `b[i]`), `zero_direction` (`b`) when `a == b`.
+    pub fn new(a: Vector3<T>, b: Vector3<T>) -> Result<Self, GeomError> {
+        check_vec("a", a.as_slice())?;
+        check_vec("b", b.as_slice())?;
+        if a == b {
+            return Err(GeomError::ZeroDirection { field: "b".into() });
+        }
+        Ok(Segment { a, b })
+    }
+    pub fn a(&self) -> &Vector3<T> {
+        &self.a
+    }
+    pub fn b(&self) -> &Vector3<T> {
+        &self.b
+    }
+}
+
+/// A plane: parametric `s(u, v) = origin + u·u + v·v` (OPERATIONS.md §3.3; any
+/// non-collinear basis) or implicit `normal·x + d = 0` (no parameters reported).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Plane<T: Coord> {
+    Parametric {
+        origin: Vector3<T>,
+        u: Vector3<T>,
+        v: Vector3<T>,
+    },
+    Implicit {
+        normal: Vector3<T>,
+        d: T,
+    },
+}
+
+impl<T: Coord> Plane<T> {
+    /// Errors: `non_finite` (`origin[i]`, `u[i]`, `v[i]`), `zero_direction` (`u` or `v`),
+    /// `collinear_plane_vectors` (`v`) when `u × v = 0` exactly.
+    pub fn parametric(origin: Vector3<T>, u: Vector3<T>, v: Vector3<T>) -> Result<Self, GeomError> {
+        check_vec("origin", origin.as_slice())?;
+        check_vec("u", u.as_slice())?;
+        check_vec("v", v.as_slice())?;
+        nonzero("u", u.as_slice())?;
+        nonzero("v", v.as_slice())?;
+        if T::cross_is_zero(&u, &v) {
+            return Err(GeomError::CollinearPlaneVectors { field: "v".into() });
+        }
+        Ok(Plane::Parametric { origin, u, v })
+    }
+    /// Errors: `non_finite` (`normal[i]`, `d`), `zero_normal` (`normal`).
+    pub fn implicit(normal: Vector3<T>, d: T) -> Result<Self, GeomError> {
+        check_vec("normal", normal.as_slice())?;
+        d.check_finite("d")?;
+        if normal.iter().all(|x| x.is_zero()) {
+            return Err(GeomError::ZeroNormal {
+                field: "normal".into(),
+            });
+        }
+        Ok(Plane::Implicit { normal, d })
+    }
+}
+
+/// A 2D line `c(t) = origin + t·dir`, optionally restricted to `t ∈ range`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Line2<T: Coord> {
+    origin: Vector2<T>,
+    dir: Vector2<T>,
+    range: Option<[T; 2]>,
+}
+
+impl<T: Coord> Line2<T> {
+    /// Errors as [`Line::new`].
+    pub fn new(origin: Vector2<T>, dir: Vector2<T>) -> Result<Self, GeomError> {
+        Self::with_range(origin, dir, None)
+    }
+    /// Errors as [`Line::with_range`].
+    pub fn with_range(
+        origin: Vector2<T>,
+        dir: Vector2<T>,
+        range: Option<[T; 2]>,
+    ) -> Result<Self, GeomError> {
+        check_vec("origin", origin.as_slice())?;
+        check_vec("dir", dir.as_slice())?;
+        nonzero("dir", dir.as_slice())?;
+        check_range(&range)?;
+        Ok(Line2 { origin, dir, range })
+    }
+    pub fn origin(&self) -> &Vector2<T> {
+        &self.origin
+    }
+    pub fn dir(&self) -> &Vector2<T> {
+        &self.dir
+    }
+    pub fn range(&self) -> Option<&[T; 2]> {
+        self.range.as_ref()
+    }
+}
+
+/// A 2D segment `(1 − t)·a + t·b`, `t ∈ [0, 1]`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Segment2<T: Coord> {
+    a: Vector2<T>,
+    b: Vector2<T>,
+}
+
+impl<T: Coord> Segment2<T> {
+    /// Errors as [`Segment::new`].
+    pub fn new(a: Vector2<T>, b: Vector2<T>) -> Result<Self, GeomError> {
+        check_vec("a", a.as_slice())?;
+        check_vec("b", b.as_slice())?;
+        if a == b {
+            return Err(GeomError::ZeroDirection { field: "b".into() });
+        }
+        Ok(Segment2 { a, b })
+    }
+    pub fn a(&self) -> &Vector2<T> {
+        &self.a
+    }
+    pub fn b(&self) -> &Vector2<T> {
+        &self.b
+    }
+}

@@ -1,0 +1,439 @@
+//! Plane ∩ plane, OPERATIONS.md §8 with the correction (8.3), unnormalised.
+//!
+//! With `N_a`, `N_b` the unnormalised normals (`u × v` or the given normal), the
+//! direction is `n = N_a × N_b` (eq. (8.1) without the unit normals: its length is
+//! `|N_a||N_b| sin θ`, not `sin θ`). The point is (8.3) generalised to any reference
+//! point `x_r` (`b`'s origin when `b` is parametric — then it is exactly (8.3) — else
+//! `a`'s origin, else the coordinate origin) with `F = f(x_r)` the planes' values there:
+//! `p = x_r − (F_a (N_b × n) + F_b (n × N_a))/|n|²`, the projection of `x_r` onto the line.
+//!
+//! The parameter lines (8.4) on a parametric plane are `l(t) = (u_p, v_p) + t(du, dv)`
+//! for the points `p + t n`. `(du, dv)` are the coordinates of `n` in the plane's basis,
+//! which simplify exactly (`n × s₂ = N_a(N_b·s₂)`-type identities) to polynomials:
+//! on `a`: `(du, dv) = (−N_b·a₂, N_b·a₁)`; on `b`: `(N_a·b₂, −N_a·b₁)`. `(u_p, v_p)` solves
+//! `p = a₀ + u a₁ + v a₂` via the two conditions `f_b(p) = 0`, `n·(p − x_r) = 0`, whose
+//! determinant is `|n|²`: `u = (e (n·a₂) − (N_b·a₂) g)/|n|²`, `v = ((N_b·a₁) g − e (n·a₁))/|n|²`
+//! with `e = −f_b(a₀)`, `g = n·(x_r − a₀)`; on `b` the same with the roles swapped and
+//! determinant `−|n|²`.
+//!
+//! `n = 0` exactly: `Coincident` if `h_a N_b = h_b N_a` (planes `N·x = h`), else `Parallel`.
+
+use nalgebra::{Scalar, Vector2, Vector3};
+use rug::Rational;
+
+use super::data::PlaneData;
+use super::exact_tier::{expansion_tier, filter_certified, ExpansionRounder, Rounder};
+use super::objects::Plane;
+use crate::certificate::Certified;
+use crate::num::dd::{Dd, ProductMode, U};
+use crate::num::expansion::Expansion;
+use crate::num::filter::{
+    bound, dispatch_fma, extend_scale, group_scale, round_over, round_value, Denominator,
+};
+use crate::num::ratio::Ratio;
+use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
+use crate::num::round::{exponent_of, Rounded};
+
+/// A line in a plane's parameter space: `l(t) = origin + t·dir` (OPERATIONS.md eq. (8.4)).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ParamLine<S: Scalar> {
+    pub origin: Vector2<S>,
+    pub dir: Vector2<S>,
+}
+
+/// The intersection line `p(t) = point + t·dir` with its parameter lines on each
+/// parametric plane (`on_a(t)`, `on_b(t)` are the parameters of `p(t)`).
+///
+/// `dir = 2^dir_exponent · (N_a × N_b)`, and the parameter-line directions are scaled
+/// alike. `dir_exponent` is 0 unless the largest component of `N_a × N_b` lies outside
+/// `[2⁻¹⁰⁰⁰, 2¹⁰⁰⁰)`; then it brings that component into `[1, 2)`, so that it rounds
+/// to a finite normal double (certified path only: `_f64` and `_exact` use 0).
+#[derive(Debug, Clone, PartialEq)]
+pub struct PlaneLine<S: Scalar> {
+    pub point: Vector3<S>,
+    pub dir: Vector3<S>,
+    pub dir_exponent: i32,
+    pub on_a: Option<ParamLine<S>>,
+    pub on_b: Option<ParamLine<S>>,
+}
+
+/// The result of plane ∩ plane.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlanePlane<S: Scalar> {
+    Line(PlaneLine<S>),
+    /// Parallel and distinct: empty.
+    Parallel,
+    /// The same plane.
+    Coincident,
+}
+
+impl<S: Scalar> ParamLine<S> {
+    fn map<T: Scalar>(self, mut f: impl FnMut(S) -> T) -> ParamLine<T> {
+        ParamLine {
+            origin: self.origin.map(&mut f),
+            dir: self.dir.map(&mut f),
+        }
+    }
+}
+
+impl<S: Scalar> PlaneLine<S> {
+    /// Apply `f` to every number.
+    pub fn map<T: Scalar>(self, mut f: impl FnMut(S) -> T) -> PlaneLine<T> {
+        PlaneLine {
+            point: self.point.map(&mut f),
+            dir: self.dir.map(&mut f),
+            dir_exponent: self.dir_exponent,
+            on_a: self.on_a.map(|l| l.map(&mut f)),
+            on_b: self.on_b.map(|l| l.map(&mut f)),
+        }
+    }
+}
+
+impl<S: Scalar> PlanePlane<S> {
+    /// Apply `f` to every number.
+    pub fn map<T: Scalar>(self, f: impl FnMut(S) -> T) -> PlanePlane<T> {
+        match self {
+            PlanePlane::Line(l) => PlanePlane::Line(l.map(f)),
+            PlanePlane::Parallel => PlanePlane::Parallel,
+            PlanePlane::Coincident => PlanePlane::Coincident,
+        }
+    }
+}
+
+/// Numerators (over `|n|²`) of a point's parameters and the direction's parameters.
+pub(crate) struct ParamTerms<R> {
+    pub num: V2<R>,
+    pub dir: V2<R>,
+}
+
+/// The polynomials of the operation.
+pub(crate) struct Terms<R> {
+    pub n: V3<R>,
+    pub nn: R,
+    pub pnum: V3<R>,
+    pub on_a: Option<ParamTerms<R>>,
+    pub on_b: Option<ParamTerms<R>>,
+}
+
+/// The reference point `x_r` (see the module documentation).
+pub(crate) fn reference<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> V3<R> {
+    b.origin()
+        .or(a.origin())
+        .cloned()
+        .unwrap_or_else(|| [R::zero(), R::zero(), R::zero()])
+}
+
+/// Parameters on parametric plane `q` of the line of `q ∩ other`, with `n = N_q × N_o`
+/// when `sign = 1` (plane `a`), `n = N_o × N_q` (plane `b`, `sign = −1`).
+#[inline(always)]
+fn param_terms<R: Ring>(
+    q: &PlaneData<R>,
+    other: &PlaneData<R>,
+    n: &V3<R>,
+    x_r: &V3<R>,
+    on_a: bool,
+) -> Option<ParamTerms<R>> {
+    let PlaneData::Param { o, u, v, .. } = q else {
+        return None;
+    };
+    let no = other.n();
+    let e = other.value_at(o).negate();
+    let g = dot3(n, &sub3(x_r, o));
+    let (nu, nv) = (dot3(no, u), dot3(no, v));
+    let (n_u, n_v) = (dot3(n, u), dot3(n, v));
+    let un = e.times(&n_v).minus(&nv.times(&g));
+    let vn = nu.times(&g).minus(&e.times(&n_u));
+    Some(if on_a {
+        ParamTerms {
+            num: [un, vn],
+            dir: [nv.negate(), nu],
+        }
+    } else {
+        ParamTerms {
+            num: [un.negate(), vn.negate()],
+            dir: [nv, nu.negate()],
+        }
+    })
+}
+
+#[inline(always)]
+pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
+    terms_from(a, b, cross3(a.n(), b.n()))
+}
+
+/// The line's numerators given its direction `n = N_a × N_b`.
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> Terms<R> {
+    let nn = dot3(&n, &n);
+    let x_r = reference(a, b);
+    let fa = a.value_at(&x_r);
+    let fb = b.value_at(&x_r);
+    let ta = cross3(b.n(), &n);
+    let tb = cross3(&n, a.n());
+    let pnum = each!(i in [0, 1, 2] => {
+        x_r[i]
+            .times(&nn)
+            .minus(&fa.times(&ta[i]))
+            .minus(&fb.times(&tb[i]))
+    });
+    let on_a = param_terms(a, b, &n, &x_r, true);
+    let on_b = param_terms(b, a, &n, &x_r, false);
+    Terms {
+        n,
+        nn,
+        pnum,
+        on_a,
+        on_b,
+    }
+}
+
+/// The exact decision procedure, generic over the field.
+pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R> {
+    let n = cross3(a.n(), b.n());
+    if is_zero3(&n) {
+        let diff = sub3(&scale3(&a.offset(), b.n()), &scale3(&b.offset(), a.n()));
+        return if is_zero3(&diff) {
+            PlanePlane::Coincident
+        } else {
+            PlanePlane::Parallel
+        };
+    }
+    PlanePlane::Line(finish(terms_from(a, b, n)))
+}
+
+fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
+    let nn = tm.nn;
+    let div = |q: &R| q.divide(&nn);
+    let pl = |p: ParamTerms<R>| ParamLine {
+        origin: Vector2::new(div(&p.num[0]), div(&p.num[1])),
+        dir: Vector2::from(p.dir),
+    };
+    PlaneLine {
+        point: Vector3::new(div(&tm.pnum[0]), div(&tm.pnum[1]), div(&tm.pnum[2])),
+        dir: Vector3::from(tm.n),
+        dir_exponent: 0,
+        on_a: tm.on_a.map(pl),
+        on_b: tm.on_b.map(pl),
+    }
+}
+
+/// The line of two planes known to intersect (`N_a × N_b ≠ 0`), in the field.
+pub(crate) fn line_of<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlaneLine<R> {
+    finish(terms(a, b))
+}
+
+/// Plain f64 (uncertified; `n == 0.0` decides parallelism).
+pub fn intersect_planes_f64(a: &Plane<f64>, b: &Plane<f64>) -> PlanePlane<f64> {
+    core::<f64>(&PlaneData::new(a), &PlaneData::new(b))
+}
+
+/// Exact, on rational inputs.
+pub fn intersect_planes_exact(a: &Plane<Rational>, b: &Plane<Rational>) -> PlanePlane<Rational> {
+    core::<Rational>(&PlaneData::new(a), &PlaneData::new(b))
+}
+
+/// The scale exponent of a direction (see [`PlaneLine`]), from its exact components.
+pub(crate) fn dir_exponent(dir: &[Rational]) -> i32 {
+    let e = dir.iter().filter_map(exponent_of).max().unwrap_or(0);
+    if (-1000..1000).contains(&e) {
+        0
+    } else {
+        -(e as i32)
+    }
+}
+
+/// Round an exact plane line, scaling its directions (see [`PlaneLine`]).
+pub(crate) fn round_line(l: PlaneLine<Rational>, r: &mut Rounder) -> PlaneLine<Rounded> {
+    let k = dir_exponent(l.dir.as_slice());
+    let pl = |p: ParamLine<Rational>, r: &mut Rounder| ParamLine {
+        origin: p.origin.map(|x| r.round(x)),
+        dir: p.dir.map(|x| r.round_scaled(x, k)),
+    };
+    PlaneLine {
+        point: l.point.map(|x| r.round(x)),
+        dir: l.dir.map(|x| r.round_scaled(x, k)),
+        dir_exponent: k,
+        on_a: l.on_a.map(|p| pl(p, r)),
+        on_b: l.on_b.map(|p| pl(p, r)),
+    }
+}
+
+/// Round an exact plane line from the expansion tier (unscaled directions only).
+pub(crate) fn round_line_expansion(
+    l: PlaneLine<Ratio<Expansion>>,
+    r: &mut ExpansionRounder,
+) -> PlaneLine<Rounded> {
+    r.check_unscaled(l.dir.as_slice());
+    l.map(|x| r.round(x))
+}
+
+/// Certified: exact verdict, correctly rounded point, direction and parameter lines.
+pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
+    if let Some(l) = fast_dispatch(a, b) {
+        return filter_certified(PlanePlane::Line(l));
+    }
+    if let Some(c) =
+        expansion_tier(
+            |r| match core::<Ratio<Expansion>>(&PlaneData::new(a), &PlaneData::new(b)) {
+                PlanePlane::Line(l) => PlanePlane::Line(round_line_expansion(l, r)),
+                PlanePlane::Parallel => PlanePlane::Parallel,
+                PlanePlane::Coincident => PlanePlane::Coincident,
+            },
+        )
+    {
+        return c;
+    }
+    let mut r = Rounder::default();
+    let res = match core::<Rational>(&PlaneData::new(a), &PlaneData::new(b)) {
+        PlanePlane::Line(l) => PlanePlane::Line(round_line(l, &mut r)),
+        PlanePlane::Parallel => PlanePlane::Parallel,
+        PlanePlane::Coincident => PlanePlane::Coincident,
+    };
+    r.certify(res)
+}
+
+/// Filter constants (`k·u²`), re-derived by `tests::filter_constants` with
+/// [`crate::num::error_bound::ErrorBound`] over all four kind combinations (rules as in
+/// `line_plane`): `n` (degree 4), `|n|²` (8), point numerators (9), parameter
+/// numerators (8), parameter directions (3).
+pub(crate) const EPS_N: f64 = 347.0 * U * U;
+pub(crate) const EPS_NN: f64 = 37226.0 * U * U;
+pub(crate) const EPS_PNUM: f64 = 271491.0 * U * U;
+pub(crate) const EPS_PARAM: f64 = 134081.0 * U * U;
+pub(crate) const EPS_PDIR: f64 = 173.0 * U * U;
+
+/// Group scales of a plane for the filter: `(m_G, m_G^k)` and its contribution to the
+/// position scale.
+#[inline(always)]
+pub(crate) fn plane_scales(p: &Plane<f64>, mp: f64) -> Option<(f64, f64, f64)> {
+    match p {
+        Plane::Parametric { origin, u, v } => {
+            let m = group_scale(u.as_slice())?.max(group_scale(v.as_slice())?);
+            Some((m, m * m, mp.max(group_scale(origin.as_slice())?)))
+        }
+        Plane::Implicit { normal, d } => {
+            let m = group_scale(normal.as_slice())?;
+            Some((m, m, extend_scale(Some(mp), *d, m)?))
+        }
+    }
+}
+
+fn fast_dispatch(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
+    dispatch_fma!(fast(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>>)
+}
+
+/// The filter tier: groups `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees
+/// (`k = 2` parametric, 1 implicit): `n`: `G_a^ka G_b^kb`; `|n|²`: twice that; point
+/// numerators: `P G_a^2ka G_b^2kb`; parameter numerators on `a`: `P G_a^(ka+1) G_b^2kb`
+/// (on `b` symmetrically); parameter directions on `a`: `G_a G_b^kb`.
+#[inline(always)]
+fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
+    let (ma, ka, mp) = plane_scales(a, SCALE_FLOOR)?;
+    let (mb, kb, mp) = plane_scales(b, mp)?;
+    let pa: PlaneData<Dd<M>> = PlaneData::new(a);
+    let pb: PlaneData<Dd<M>> = PlaneData::new(b);
+    // The decision first: preparing |n|² proves n ≠ 0.
+    let n = cross3(pa.n(), pb.n());
+    let e_nn = bound(EPS_NN, &[ka, ka, kb, kb]);
+    let nn = Denominator::new(&dot3(&n, &n), e_nn)?;
+    let tm = terms_from(&pa, &pb, n);
+    let e_n = bound(EPS_N, &[ka, kb]);
+    let dir = [
+        round_value(&tm.n[0], e_n),
+        round_value(&tm.n[1], e_n),
+        round_value(&tm.n[2], e_n),
+    ];
+    let dir = dir.map(|d| d.filter(|d| !d.overflowed()));
+    let [Some(d0), Some(d1), Some(d2)] = dir else {
+        return None;
+    };
+    let big = d0.nearest.abs().max(d1.nearest.abs()).max(d2.nearest.abs());
+    if !(big >= 2f64.powi(-999) && big < 2f64.powi(999)) {
+        return None;
+    }
+    let e_p = bound(EPS_PNUM, &[mp, ka, ka, kb, kb]);
+    let point = [
+        round_over(&tm.pnum[0], e_p, &nn)?,
+        round_over(&tm.pnum[1], e_p, &nn)?,
+        round_over(&tm.pnum[2], e_p, &nn)?,
+    ];
+    let side = |t: &Option<ParamTerms<Dd<M>>>,
+                m: f64,
+                kq: f64,
+                ko: f64|
+     -> Option<Option<ParamLine<Rounded>>> {
+        let Some(t) = t else { return Some(None) };
+        let e_num = bound(EPS_PARAM, &[mp, kq, m, ko, ko]);
+        let e_dir = bound(EPS_PDIR, &[m, ko]);
+        Some(Some(ParamLine {
+            origin: Vector2::new(
+                round_over(&t.num[0], e_num, &nn)?,
+                round_over(&t.num[1], e_num, &nn)?,
+            ),
+            dir: Vector2::new(
+                round_value(&t.dir[0], e_dir)?,
+                round_value(&t.dir[1], e_dir)?,
+            ),
+        }))
+    };
+    let on_a = side(&tm.on_a, ma, ka, kb)?;
+    let on_b = side(&tm.on_b, mb, kb, ka)?;
+    Some(PlaneLine {
+        point: Vector3::from(point),
+        dir: Vector3::new(d0, d1, d2),
+        dir_exponent: 0,
+        on_a,
+        on_b,
+    })
+}
+
+/// The position scale before any origin is seen.
+const SCALE_FLOOR: f64 = crate::num::filter::SCALE_MIN;
+
+/// Worst-case [`crate::num::error_bound::ErrorBound`] inputs for a plane of either kind.
+#[cfg(test)]
+pub(crate) fn bound_planes() -> [PlaneData<crate::num::error_bound::ErrorBound>; 2] {
+    use crate::num::error_bound::ErrorBound;
+    let i = ErrorBound::INPUT;
+    [
+        PlaneData::Param {
+            o: [i; 3],
+            u: [i; 3],
+            v: [i; 3],
+            n: cross3(&[i; 3], &[i; 3]),
+        },
+        PlaneData::Implicit { n: [i; 3], d: i },
+    ]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::error_bound::ErrorBound;
+
+    #[test]
+    fn filter_constants() {
+        let mut w = [ErrorBound::zero(); 5];
+        for a in &bound_planes() {
+            for b in &bound_planes() {
+                let t = terms(a, b);
+                w[0] = t.n.iter().fold(w[0], |m, x| m.max(*x));
+                w[1] = w[1].max(t.nn);
+                w[2] = t.pnum.iter().fold(w[2], |m, x| m.max(*x));
+                for p in [&t.on_a, &t.on_b].into_iter().flatten() {
+                    w[3] = p.num.iter().fold(w[3], |m, x| m.max(*x));
+                    w[4] = p.dir.iter().fold(w[4], |m, x| m.max(*x));
+                }
+            }
+        }
+        println!("derived (u²): {:?}", w.map(|x| x.e_in_u2()));
+        for (x, c) in w.iter().zip([EPS_N, EPS_NN, EPS_PNUM, EPS_PARAM, EPS_PDIR]) {
+            assert!(
+                c >= x.e,
+                "constant {} u² below the derived {} u²",
+                c / (U * U),
+                x.e_in_u2()
+            );
+        }
+    }
+}

@@ -1,0 +1,320 @@
+//! Three planes, OPERATIONS.md §7.1, with every degenerate outcome (CGAL's result kinds:
+//! a point, a line, a plane, or nothing).
+//!
+//! With unnormalised normals `N_i` and `D = N₀·(N₁ × N₂)` (eq. (7.2)'s denominator with
+//! the normalisations cancelled), a reference point `x_r` (the first parametric plane's
+//! origin, else the coordinate origin) and `F_i = f_i(x_r)`:
+//! `p = x_r − (F₀ N₁×N₂ + F₁ N₂×N₀ + F₂ N₀×N₁)/D` (Cramer on `N_i·(p − x_r) = −F_i`).
+//! Parameters on a parametric plane `k` (with `i, j` the next two, cyclically) solve the
+//! 2×2 system `f_i(o_k + u u_k + v v_k) = 0`, `f_j(...) = 0`, whose determinant is
+//! `(N_i × N_j)·(u_k × v_k) = D`: `u = (F_j (N_i·v_k) − F_i (N_j·v_k))/D`,
+//! `v = (F_i (N_j·u_k) − F_j (N_i·u_k))/D`, `F = f(o_k)`. This is (3.7)–(3.8) for the
+//! point, of lower degree (§16.7's `(t, τ) = (−1, 2)` needs no orthogonal basis).
+//!
+//! `D = 0` exactly: if every `N_i × N_j = 0`, all normals are parallel: `Plane` when all
+//! three coincide (`h_i N_j = h_j N_i`), else `Empty`. Otherwise the first pair `(i, j)`
+//! (in the order (0,1), (0,2), (1,2)) with `N_i × N_j ≠ 0` gives the line of §8; it is
+//! the answer if it lies in the third plane (`f_k(p) = 0`; its direction is orthogonal to
+//! `N_k` because `D = 0`), else `Empty`. This covers two coincident planes crossed by a
+//! third, three planes through one line, two parallel planes and a third crossing them,
+//! and the prism of three pairwise crossing planes with parallel lines.
+
+use nalgebra::{Scalar, Vector2, Vector3};
+use rug::Rational;
+
+use super::data::PlaneData;
+use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::objects::Plane;
+use super::plane_plane::{line_of, plane_scales, round_line, round_line_expansion, PlaneLine};
+use crate::certificate::Certified;
+use crate::num::dd::{Dd, ProductMode, U};
+use crate::num::expansion::Expansion;
+use crate::num::filter::{bound, dispatch_fma, round_over, Denominator, SCALE_MIN};
+use crate::num::ratio::Ratio;
+use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
+use crate::num::round::Rounded;
+
+/// The result of three planes.
+#[derive(Debug, Clone, PartialEq)]
+pub enum ThreePlanes<S: Scalar> {
+    /// One point, with its parameters on each parametric plane (input order).
+    Point {
+        point: Vector3<S>,
+        params: [Option<Vector2<S>>; 3],
+    },
+    /// A common line (see [`PlaneLine`]; `pair` names the two planes it was computed
+    /// from, whose parameter lines `on_a`, `on_b` it carries).
+    Line {
+        line: PlaneLine<S>,
+        pair: (usize, usize),
+    },
+    /// All three planes coincide.
+    Plane,
+    /// No common point.
+    Empty,
+}
+
+impl<S: Scalar> ThreePlanes<S> {
+    /// Apply `f` to every number.
+    pub fn map<T: Scalar>(self, mut f: impl FnMut(S) -> T) -> ThreePlanes<T> {
+        match self {
+            ThreePlanes::Point { point, params } => ThreePlanes::Point {
+                point: point.map(&mut f),
+                params: params.map(|p| p.map(|p| p.map(&mut f))),
+            },
+            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
+                line: line.map(f),
+                pair,
+            },
+            ThreePlanes::Plane => ThreePlanes::Plane,
+            ThreePlanes::Empty => ThreePlanes::Empty,
+        }
+    }
+}
+
+/// The polynomials of the point case.
+pub(crate) struct Terms<R> {
+    pub det: R,
+    pub pnum: V3<R>,
+    pub params: [Option<V2<R>>; 3],
+}
+
+/// `[N₁×N₂, N₂×N₀, N₀×N₁]` and `D = N₀·(N₁×N₂)`: the decision of §7.1.
+#[inline(always)]
+pub(crate) fn det_terms<R: Ring>(p: &[PlaneData<R>; 3]) -> ([V3<R>; 3], R) {
+    let n = [p[0].n(), p[1].n(), p[2].n()];
+    let c = [cross3(n[1], n[2]), cross3(n[2], n[0]), cross3(n[0], n[1])];
+    let det = dot3(n[0], &c[0]);
+    (c, det)
+}
+
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` after its decision
+#[inline(always)]
+pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
+    let (c, det) = det_terms(p);
+    terms_from(p, &c, det)
+}
+
+/// The point-case numerators, given [`det_terms`].
+#[inline(always)]
+pub(crate) fn terms_from<R: Ring>(p: &[PlaneData<R>; 3], c: &[V3<R>; 3], det: R) -> Terms<R> {
+    let n = [p[0].n(), p[1].n(), p[2].n()];
+    let x_r = p
+        .iter()
+        .find_map(|q| q.origin())
+        .cloned()
+        .unwrap_or_else(|| [R::zero(), R::zero(), R::zero()]);
+    let f = [
+        p[0].value_at(&x_r),
+        p[1].value_at(&x_r),
+        p[2].value_at(&x_r),
+    ];
+    let pnum = each!(m in [0, 1, 2] => {
+        x_r[m]
+            .times(&det)
+            .minus(&f[0].times(&c[0][m]))
+            .minus(&f[1].times(&c[1][m]))
+            .minus(&f[2].times(&c[2][m]))
+    });
+    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k));
+    Terms { det, pnum, params }
+}
+
+/// Numerators (over `D`) of the parameters of the point on parametric plane `k`.
+#[inline(always)]
+fn plane_params<R: Ring>(p: &[PlaneData<R>; 3], n: &[&V3<R>; 3], k: usize) -> Option<V2<R>> {
+    let PlaneData::Param { o, u, v, .. } = &p[k] else {
+        return None;
+    };
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    let (fi, fj) = (p[i].value_at(o), p[j].value_at(o));
+    let un = fj.times(&dot3(n[i], v)).minus(&fi.times(&dot3(n[j], v)));
+    let vn = fi.times(&dot3(n[j], u)).minus(&fj.times(&dot3(n[i], u)));
+    Some([un, vn])
+}
+
+/// The exact decision procedure, generic over the field.
+pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
+    let (c, det) = det_terms(p);
+    if !det.is_zero() {
+        let tm = terms_from(p, &c, det);
+        let d = &tm.det;
+        let [x, y, z] = tm.pnum.map(|q| q.divide(d));
+        return ThreePlanes::Point {
+            point: Vector3::new(x, y, z),
+            params: tm
+                .params
+                .map(|q| q.map(|[u, v]| Vector2::new(u.divide(d), v.divide(d)))),
+        };
+    }
+    // N_i × N_j for the pairs (0,1), (0,2), (1,2) are ±c[2], ±c[1], c[0].
+    for (i, j, k, cij) in [(0, 1, 2, &c[2]), (0, 2, 1, &c[1]), (1, 2, 0, &c[0])] {
+        if !is_zero3(cij) {
+            let line = line_of(&p[i], &p[j]);
+            let point = [
+                line.point[0].clone(),
+                line.point[1].clone(),
+                line.point[2].clone(),
+            ];
+            return if p[k].value_at(&point).is_zero() {
+                ThreePlanes::Line { line, pair: (i, j) }
+            } else {
+                ThreePlanes::Empty
+            };
+        }
+    }
+    let same = |a: &PlaneData<R>, b: &PlaneData<R>| {
+        is_zero3(&sub3(
+            &scale3(&a.offset(), b.n()),
+            &scale3(&b.offset(), a.n()),
+        ))
+    };
+    if same(&p[0], &p[1]) && same(&p[0], &p[2]) {
+        ThreePlanes::Plane
+    } else {
+        ThreePlanes::Empty
+    }
+}
+
+/// Plain f64 (uncertified; `D == 0.0` decides degeneracy, like CGAL's Epick).
+pub fn intersect_three_planes_f64(p: &[Plane<f64>; 3]) -> ThreePlanes<f64> {
+    core::<f64>(&[
+        PlaneData::new(&p[0]),
+        PlaneData::new(&p[1]),
+        PlaneData::new(&p[2]),
+    ])
+}
+
+/// Exact, on rational inputs.
+pub fn intersect_three_planes_exact(p: &[Plane<Rational>; 3]) -> ThreePlanes<Rational> {
+    core::<Rational>(&[
+        PlaneData::new(&p[0]),
+        PlaneData::new(&p[1]),
+        PlaneData::new(&p[2]),
+    ])
+}
+
+/// Certified: exact verdict, correctly rounded coordinates and parameters.
+pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
+    if let Some(r) = fast_dispatch(p) {
+        return filter_certified(r);
+    }
+    if let Some(c) = expansion_tier(|r| {
+        let data: [PlaneData<Ratio<Expansion>>; 3] = [
+            PlaneData::new(&p[0]),
+            PlaneData::new(&p[1]),
+            PlaneData::new(&p[2]),
+        ];
+        match core(&data) {
+            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
+                line: round_line_expansion(line, r),
+                pair,
+            },
+            other => other.map(|q| r.round(q)),
+        }
+    }) {
+        return c;
+    }
+    let data: [PlaneData<Rational>; 3] = [
+        PlaneData::new(&p[0]),
+        PlaneData::new(&p[1]),
+        PlaneData::new(&p[2]),
+    ];
+    let mut r = Rounder::default();
+    let res = match core(&data) {
+        ThreePlanes::Line { line, pair } => ThreePlanes::Line {
+            line: round_line(line, &mut r),
+            pair,
+        },
+        other => other.map(|q| r.round(q)),
+    };
+    r.certify(res)
+}
+
+/// Filter constants (`k·u²`), re-derived by `tests::filter_constants` with
+/// [`crate::num::error_bound::ErrorBound`] over all eight kind combinations (rules as in
+/// `line_plane`): `D` (degree 6), point numerators (7), parameter numerators (6).
+const EPS_DET: f64 = 5598.0 * U * U;
+const EPS_PNUM: f64 = 66138.0 * U * U;
+const EPS_PARAM: f64 = 20027.0 * U * U;
+
+fn fast_dispatch(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
+    dispatch_fma!(fast(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>>)
+}
+
+/// The filter tier (point case only). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`,
+/// `G_2`; with `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`:
+/// `S₀S₁S₂`; point numerators: `P S₀S₁S₂`; parameter numerators of plane `k`:
+/// `P S_i S_j m_k`.
+#[inline(always)]
+fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
+    let (m0, s0, mp) = plane_scales(&p[0], SCALE_MIN)?;
+    let (m1, s1, mp) = plane_scales(&p[1], mp)?;
+    let (m2, s2, mp) = plane_scales(&p[2], mp)?;
+    let (m, s) = ([m0, m1, m2], [s0, s1, s2]);
+    let data: [PlaneData<Dd<M>>; 3] = [
+        PlaneData::new(&p[0]),
+        PlaneData::new(&p[1]),
+        PlaneData::new(&p[2]),
+    ];
+    // The decision first: preparing D proves D ≠ 0 (|D̂| > its error bound), and an
+    // undecided (e.g. exactly degenerate) input leaves before the numerators.
+    let (c, d) = det_terms(&data);
+    let e_det = bound(EPS_DET, &s);
+    let det = Denominator::new(&d, e_det)?;
+    let tm = terms_from(&data, &c, d);
+    let e_p = bound(EPS_PNUM, &[mp, s0, s1, s2]);
+    let point = [
+        round_over(&tm.pnum[0], e_p, &det)?,
+        round_over(&tm.pnum[1], e_p, &det)?,
+        round_over(&tm.pnum[2], e_p, &det)?,
+    ];
+    let mut params = [None, None, None];
+    for (k, q) in tm.params.iter().enumerate() {
+        if let Some([un, vn]) = q {
+            let e = bound(EPS_PARAM, &[mp, s[(k + 1) % 3], s[(k + 2) % 3], m[k]]);
+            params[k] = Some(Vector2::new(
+                round_over(un, e, &det)?,
+                round_over(vn, e, &det)?,
+            ));
+        }
+    }
+    Some(ThreePlanes::Point {
+        point: Vector3::from(point),
+        params,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::geom::plane_plane::bound_planes;
+    use crate::num::error_bound::ErrorBound;
+
+    #[test]
+    fn filter_constants() {
+        let kinds = bound_planes();
+        let mut w = [ErrorBound::zero(); 3];
+        for a in &kinds {
+            for b in &kinds {
+                for c in &kinds {
+                    let t = terms(&[a.clone(), b.clone(), c.clone()]);
+                    w[0] = w[0].max(t.det);
+                    w[1] = t.pnum.iter().fold(w[1], |m, x| m.max(*x));
+                    for q in t.params.iter().flatten() {
+                        w[2] = q.iter().fold(w[2], |m, x| m.max(*x));
+                    }
+                }
+            }
+        }
+        println!("derived (u²): {:?}", w.map(|x| x.e_in_u2()));
+        for (x, c) in w.iter().zip([EPS_DET, EPS_PNUM, EPS_PARAM]) {
+            assert!(
+                c >= x.e,
+                "constant {} u² below the derived {} u²",
+                c / (U * U),
+                x.e_in_u2()
+            );
+        }
+    }
+}
