@@ -52,7 +52,11 @@ fn id_text(r: &CaseResult) -> String {
 }
 
 fn vector_text(v: &[f64]) -> String {
-    let parts: Vec<String> = v.iter().map(|x| format!("{x}")).collect();
+    // Shortest round-trip form, as in the JSON output (1e150, not 151 digits).
+    let parts: Vec<String> = v
+        .iter()
+        .map(|&x| serde_json::Number::from_f64(x).map_or(format!("{x}"), |n| n.to_string()))
+        .collect();
     format!("({})", parts.join(", "))
 }
 

@@ -1,11 +1,15 @@
 //! The JSON case format of the command line (spec/CASES.md): reading cases, turning
 //! them into geometric objects, and writing results as JSON Lines.
 
+mod build;
 pub mod case;
+mod linear_out;
 pub mod number;
 pub mod objects;
 pub mod result;
+mod solve;
 
 pub use case::{read_cases, Case, Op, Options, ReadCase};
 pub use number::{Double, Num};
 pub use objects::ObjectSpec;
+pub use solve::solve_case;
