@@ -14,6 +14,7 @@ pub mod error;
 pub mod geom;
 pub mod io;
 pub mod num;
+pub mod ops;
 #[cfg(feature = "cgal")]
 pub mod oracle;
 

@@ -106,9 +106,22 @@ fn degenerate_linear_cases_report_their_kinds() {
     let kinds: Vec<&str> = r.iter().map(|x| x["kind"].as_str().unwrap()).collect();
     assert_eq!(
         kinds,
-        ["line", "segment", "empty", "empty", "coincident", "empty", "plane", "segment", "empty", "empty"]
+        [
+            "line",
+            "segment",
+            "empty",
+            "empty",
+            "coincident",
+            "empty",
+            "plane",
+            "segment",
+            "empty",
+            "empty"
+        ]
     );
-    assert!(r.iter().all(|x| x["status"] == "exact" && x["complete"] == true));
+    assert!(r
+        .iter()
+        .all(|x| x["status"] == "exact" && x["complete"] == true));
     // The contained segment is reported by its ends, with their parameters on it.
     assert_eq!(f64s(&r[1]["segment"]["b"]["xyz"]), vec![2.0, 4.0, 1.0]);
     assert_eq!(f64s(&r[1]["segment"]["b"]["params"][0]), vec![1.0]);
@@ -170,29 +183,67 @@ fn each_error_kind_names_its_field() {
         {"type": "line2", "origin": [0, 1], "dir": [1, -1]}]});
     let plane = json!({"type": "plane", "normal": [0, 0, 1], "d": 0});
     let cases = [
-        (json!({"op": "intersect", "objects": [{"type": "line", "origin": [0, 0, 0], "dir": [0, 0, 0]}, plane]}),
-         "zero_direction", "objects[0].dir"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "plane", "origin": [0, 0, 0], "u": [1, 2, 3], "v": [2, 4, 6]}]}),
-         "collinear_plane_vectors", "objects[1].v"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 0], "d": 1}]}),
-         "zero_normal", "objects[1].normal"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 1], "d": "1/0"}]}),
-         "invalid_number", "objects[1].d"),
-        (json!({"op": "intersect", "objects": [{"type": "line", "origin": [0, 0, 0], "dir": [1, 0, 0], "range": [2, 1]}, plane]}),
-         "empty_domain", "objects[0].range"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 1], "d": 0, "colour": 3}]}),
-         "format", "objects[1]"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 1], "d": 0, "u": [1, 0, 0]}]}),
-         "format", "objects[1].normal"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "plane", "origin": [0, 0, 0], "u": [1, 0, 0]}]}),
-         "format", "objects[1].v"),
-        (json!({"op": "intersect", "objects": [plane, {"type": "blob"}]}),
-         "unsupported", "objects[1].type"),
-        (json!({"op": "intersect", "objects": [plane]}), "invalid_value", "objects"),
+        (
+            json!({"op": "intersect", "objects": [{"type": "line", "origin": [0, 0, 0], "dir": [0, 0, 0]}, plane]}),
+            "zero_direction",
+            "objects[0].dir",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "plane", "origin": [0, 0, 0], "u": [1, 2, 3], "v": [2, 4, 6]}]}),
+            "collinear_plane_vectors",
+            "objects[1].v",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 0], "d": 1}]}),
+            "zero_normal",
+            "objects[1].normal",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 1], "d": "1/0"}]}),
+            "invalid_number",
+            "objects[1].d",
+        ),
+        (
+            json!({"op": "intersect", "objects": [{"type": "line", "origin": [0, 0, 0], "dir": [1, 0, 0], "range": [2, 1]}, plane]}),
+            "empty_domain",
+            "objects[0].range",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 1], "d": 0, "colour": 3}]}),
+            "format",
+            "objects[1]",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "plane", "normal": [0, 0, 1], "d": 0, "u": [1, 0, 0]}]}),
+            "format",
+            "objects[1].normal",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "plane", "origin": [0, 0, 0], "u": [1, 0, 0]}]}),
+            "format",
+            "objects[1].v",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane, {"type": "blob"}]}),
+            "unsupported",
+            "objects[1].type",
+        ),
+        (
+            json!({"op": "intersect", "objects": [plane]}),
+            "invalid_value",
+            "objects",
+        ),
         (json!({"op": "project", "onto": plane}), "format", "point"),
-        (json!({"op": "project", "point": [1, 2], "onto": plane}), "format", "point"),
-        (json!({"op": "project", "point": [1, 2, 3], "direction": [0, 0, 0], "onto": plane}),
-         "zero_direction", "direction"),
+        (
+            json!({"op": "project", "point": [1, 2], "onto": plane}),
+            "format",
+            "point",
+        ),
+        (
+            json!({"op": "project", "point": [1, 2, 3], "direction": [0, 0, 0], "onto": plane}),
+            "zero_direction",
+            "direction",
+        ),
     ];
     let mut input = vec![good.clone()];
     input.extend(cases.iter().map(|(c, _, _)| c.clone()));
@@ -204,7 +255,10 @@ fn each_error_kind_names_its_field() {
         let e = &r[i + 1]["error"];
         assert_eq!(r[i + 1]["status"], "error", "{case}");
         assert_eq!(e["kind"], *kind, "{case} → {e}");
-        assert!(e["field"].as_str().unwrap().starts_with(field), "{case} → {e}");
+        assert!(
+            e["field"].as_str().unwrap().starts_with(field),
+            "{case} → {e}"
+        );
     }
     // The good cases before and after the bad ones were solved: (1, 0).
     for i in [0, r.len() - 1] {
@@ -215,7 +269,10 @@ fn each_error_kind_names_its_field() {
 #[test]
 fn a_file_without_errors_exits_zero_and_demo_cases_all_solve() {
     let demo = include_str!("../src/cli/demo_cases.jsonl");
-    let cases: Vec<Value> = demo.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let cases: Vec<Value> = demo
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
     let (r, code) = solve(&cases);
     assert_eq!(code, 0);
     assert_eq!(r.len(), cases.len());
@@ -243,4 +300,38 @@ fn demo_prints_one_exact_row_per_case() {
             .unwrap_or_else(|| panic!("no row for {id}"));
         assert!(row[id.len()..].trim_start().starts_with("exact"), "{row}");
     }
+}
+
+#[test]
+fn classify_against_a_polyhedron() {
+    // OPERATIONS.md §16.9, the unit cube.
+    let cube = json!({"type": "polyhedron",
+        "vertices": [[0,0,0],[1,0,0],[1,1,0],[0,1,0],[0,0,1],[1,0,1],[1,1,1],[0,1,1]],
+        "faces": [[0,3,2,1],[4,5,6,7],[0,1,5,4],[1,2,6,5],[2,3,7,6],[3,0,4,7]]});
+    let mut bad = cube.clone();
+    bad["faces"][0][2] = json!(9);
+    let (r, code) = solve(&[
+        json!({"op": "classify", "point": [0.5, 0.5, 0.5], "shell": cube}),
+        json!({"op": "classify", "point": [1.5, 1.5, 0.5], "shell": cube}),
+        json!({"op": "classify", "point": [1.2, 1.2, 1.2], "shell": cube}),
+        json!({"op": "classify", "point": [1, 0.3, 0.3], "shell": cube}),
+        json!({"op": "classify", "point": [1.0000000000000002, 0.3, 0.3], "shell": cube}),
+        json!({"op": "classify", "point": [0.5, 0.5, 0.5], "shell": bad}),
+        json!({"op": "classify", "point": [0.5, 0.5, 0.5], "shell": {"type": "plane", "normal": [0,0,1], "d": 0}}),
+    ]);
+    assert_eq!(code, 1);
+    let kinds: Vec<&str> = r[..5].iter().map(|x| x["kind"].as_str().unwrap()).collect();
+    assert_eq!(kinds, ["inside", "outside", "outside", "on", "outside"]);
+    assert_eq!(f64s(&r[1]["points"][0]["xyz"]), vec![1.0, 1.0, 0.5]);
+    assert_eq!(
+        r[1]["points"][0]["distance"].as_f64().unwrap(),
+        0.5f64.sqrt()
+    );
+    assert_eq!(f64s(&r[2]["points"][0]["xyz"]), vec![1.0, 1.0, 1.0]);
+    assert_eq!(
+        r[4]["points"][0]["distance"].as_f64().unwrap(),
+        f64::EPSILON
+    );
+    assert_eq!(r[5]["error"]["field"], "shell.faces[0][2]");
+    assert_eq!(r[6]["error"]["kind"], "unsupported");
 }

@@ -51,12 +51,13 @@ fn id_text(r: &CaseResult) -> String {
     }
 }
 
+/// Shortest round-trip form, as in the JSON output (1e150, not 151 digits).
+fn num_text(x: f64) -> String {
+    serde_json::Number::from_f64(x).map_or(format!("{x}"), |n| n.to_string())
+}
+
 fn vector_text(v: &[f64]) -> String {
-    // Shortest round-trip form, as in the JSON output (1e150, not 151 digits).
-    let parts: Vec<String> = v
-        .iter()
-        .map(|&x| serde_json::Number::from_f64(x).map_or(format!("{x}"), |n| n.to_string()))
-        .collect();
+    let parts: Vec<String> = v.iter().map(|&x| num_text(x)).collect();
     format!("({})", parts.join(", "))
 }
 
@@ -79,7 +80,7 @@ fn answer_text(r: &CaseResult) -> String {
                     s += &format!(" params {}", params.join(" "));
                 }
                 if let Some(d) = p.signed_distance.or(p.distance) {
-                    s += &format!(" distance {d}");
+                    s += &format!(" distance {}", num_text(d));
                 }
                 if let Some(exact) = &p.exact {
                     if !exact.xyz.is_empty() {

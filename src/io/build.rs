@@ -10,11 +10,14 @@ use nalgebra::{Vector2, Vector3};
 use rug::Rational;
 
 use super::number::Num;
-use super::objects::{Line2Spec, LineSpec, ObjectSpec, PlaneSpec, Segment2Spec, SegmentSpec};
+use super::objects::{
+    Line2Spec, LineSpec, ObjectSpec, PlaneSpec, PolyhedronSpec, Segment2Spec, SegmentSpec,
+};
 use crate::error::GeomError;
 use crate::geom::{Coord, Line, Line2, Linear, Linear2, Plane, Segment, Segment2};
 use crate::num::parse::parse_rational;
 use crate::num::round::round_rational;
+use crate::ops::Polyhedron;
 
 /// Why an object could not be built in the requested coordinate type.
 #[derive(Debug)]
@@ -161,6 +164,13 @@ fn build_inner<T: FromNum>(spec: &ObjectSpec) -> Result<Object<T>, BuildError> {
         ObjectSpec::Segment2(Segment2Spec { a, b }) => {
             Object::Segment2(Segment2::new(vec2(a, "a")?, vec2(b, "b")?)?)
         }
+        ObjectSpec::Polyhedron(_) => {
+            return Err(GeomError::Unsupported {
+                field: "type".into(),
+                reason: "a polyhedron is used as the `shell` of `classify` in this build".into(),
+            }
+            .into())
+        }
     })
 }
 
@@ -210,5 +220,31 @@ fn plane<T: FromNum>(p: &PlaneSpec) -> Result<Plane<T>, BuildError> {
             message: "a plane needs origin, u, v (parametric) or normal, d (implicit)".into(),
         }
         .into()),
+    }
+}
+
+/// Validate a polyhedron (exact vertices); errors name fields below `prefix`.
+pub(crate) fn polyhedron(spec: &PolyhedronSpec, prefix: &str) -> Result<Polyhedron, GeomError> {
+    let vertices = spec
+        .vertices
+        .iter()
+        .enumerate()
+        .map(|(i, v)| {
+            let v: Vector3<Rational> = vec3(v, &format!("vertices[{i}]")).map_err(|e| match e {
+                BuildError::Geom(g) => g,
+                BuildError::NeedsRational => unreachable_rational(),
+            })?;
+            Ok([v[0].clone(), v[1].clone(), v[2].clone()])
+        })
+        .collect::<Result<Vec<_>, GeomError>>()
+        .map_err(|e| e.at(prefix))?;
+    Polyhedron::new(vertices, spec.faces.clone()).map_err(|e| e.at(prefix))
+}
+
+/// Rationals take every number; kept as a typed error rather than a panic.
+pub(crate) fn unreachable_rational() -> GeomError {
+    GeomError::Unsupported {
+        field: String::new(),
+        reason: "internal: a rational coordinate was refused".into(),
     }
 }

@@ -282,3 +282,22 @@ pub(crate) fn project_plane(
     }
     points(id, &c, vec![p])
 }
+
+/// Point against a shell: the side, and the nearest shell point with its distance.
+pub(crate) fn shell_point(
+    id: &serde_json::Value,
+    c: Certified<crate::ops::ShellPoint>,
+    keep: bool,
+) -> CaseResult {
+    let v = &c.value;
+    let xyz: Vec<Q> = v.nearest.iter().map(|x| Q::rational(x, keep)).collect();
+    let mut p = point_out(&xyz, vec![]);
+    p.distance = Some(crate::num::round::sqrt_rational(&v.distance_squared).nearest);
+    p.nearest = Some(true);
+    if let Some(exact) = p.exact.as_mut() {
+        exact.distance_squared = Some(v.distance_squared.to_string());
+    }
+    let mut out = with_kind(id, v.side.as_str(), &c);
+    out.points = Some(vec![p]);
+    out
+}

@@ -55,6 +55,15 @@ pub struct Segment2Spec {
     pub b: [Num; 2],
 }
 
+/// `polyhedron`: a closed shell; faces are vertex index lists, counter-clockwise seen
+/// from outside (validated when the case is solved).
+#[derive(Debug, Clone, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct PolyhedronSpec {
+    pub vertices: Vec<[Num; 3]>,
+    pub faces: Vec<Vec<usize>>,
+}
+
 /// One object of a case, by its `type`.
 #[derive(Debug, Clone, PartialEq)]
 pub enum ObjectSpec {
@@ -63,10 +72,18 @@ pub enum ObjectSpec {
     Plane(PlaneSpec),
     Line2(Line2Spec),
     Segment2(Segment2Spec),
+    Polyhedron(PolyhedronSpec),
 }
 
 /// The object types this build understands, as written in `type`.
-pub const OBJECT_TYPES: &[&str] = &["line", "segment", "plane", "line2", "segment2"];
+pub const OBJECT_TYPES: &[&str] = &[
+    "line",
+    "segment",
+    "plane",
+    "line2",
+    "segment2",
+    "polyhedron",
+];
 
 impl ObjectSpec {
     /// The `type` name as written in JSON.
@@ -77,6 +94,7 @@ impl ObjectSpec {
             ObjectSpec::Plane(_) => "plane",
             ObjectSpec::Line2(_) => "line2",
             ObjectSpec::Segment2(_) => "segment2",
+            ObjectSpec::Polyhedron(_) => "polyhedron",
         }
     }
 }
@@ -112,6 +130,7 @@ pub fn parse_object(mut value: serde_json::Value, prefix: &str) -> Result<Object
         "plane" => deserialize_at(value, prefix).map(ObjectSpec::Plane),
         "line2" => deserialize_at(value, prefix).map(ObjectSpec::Line2),
         "segment2" => deserialize_at(value, prefix).map(ObjectSpec::Segment2),
+        "polyhedron" => deserialize_at(value, prefix).map(ObjectSpec::Polyhedron),
         other => Err(GeomError::Unsupported {
             field: type_field,
             reason: format!(

@@ -12,9 +12,10 @@ use std::time::Instant;
 use nalgebra::Vector3;
 use rug::Rational;
 
-use super::build::{build, vec3, BuildError, FromNum, Object};
+use super::build::{build, polyhedron, unreachable_rational, vec3, BuildError, FromNum, Object};
 use super::case::{Case, Op, ReadCase};
 use super::linear_out::{self as out, Len, Q};
+use super::objects::ObjectSpec;
 use super::result::{CaseResult, LineOut, ParamLineOut, SegmentOut};
 use crate::certificate::{Arithmetic, Certified};
 use crate::error::GeomError;
@@ -57,18 +58,11 @@ fn solve(case: &Case) -> Result<CaseResult, GeomError> {
     })
 }
 
-/// Rationals take every number; kept as a typed error rather than a panic.
-fn unreachable_rational() -> GeomError {
-    GeomError::Unsupported {
-        field: String::new(),
-        reason: "internal: a rational coordinate was refused".into(),
-    }
-}
-
 fn solve_in<T: Kernel>(case: &Case) -> Result<CaseResult, BuildError> {
     match case.op {
         Op::Intersect => intersect::<T>(case),
         Op::Project => project::<T>(case),
+        Op::Classify => classify(case).map_err(BuildError::Geom),
         other => Err(GeomError::Unsupported {
             field: "op".into(),
             reason: format!("`{}` is not implemented in this build", other.as_str()),
@@ -501,4 +495,31 @@ impl Kernel for Rational {
         );
         r.done(v)
     }
+}
+
+/// `classify`: a point against a closed shell (OPERATIONS.md §4), exactly.
+fn classify(case: &Case) -> Result<CaseResult, GeomError> {
+    let missing = |field: &str| GeomError::Format {
+        field: field.into(),
+        message: format!("`classify` needs `{field}`"),
+    };
+    let point = case.point.as_ref().ok_or_else(|| missing("point"))?;
+    let shell = case.shell.as_ref().ok_or_else(|| missing("shell"))?;
+    let ObjectSpec::Polyhedron(spec) = shell else {
+        return Err(GeomError::Unsupported {
+            field: "shell.type".into(),
+            reason: format!(
+                "classify against a {} is not implemented in this build (polyhedron is)",
+                shell.type_name()
+            ),
+        });
+    };
+    let p: Vector3<Rational> = vec3(point, "point").map_err(|e| match e {
+        BuildError::Geom(g) => g,
+        BuildError::NeedsRational => unreachable_rational(),
+    })?;
+    let shell = polyhedron(spec, "shell")?;
+    let c =
+        crate::ops::classify_point_polyhedron(&[p[0].clone(), p[1].clone(), p[2].clone()], &shell);
+    Ok(out::shell_point(&case.id, c, case.options.exact))
 }
