@@ -1,4 +1,4 @@
-//! The `geocert` command line: `solve`, `demo` (and, as later issues land, `verify`,
+//! The `geocert` command line: `solve`, `verify`, `demo` (and, as later issues land,
 //! `bench`, `render`).
 
 mod cli;
@@ -25,6 +25,14 @@ enum Command {
         /// The case file, or `-` for standard input.
         file: String,
     },
+    /// Certify or refute the `claim` of each case of FILE (another program's answer,
+    /// spec/CASES.md "Claims"): confirmed / refuted / undecided per claimed item, and
+    /// the certified solutions the claim missed. Exit status 3 if any item is not
+    /// confirmed or a solution was missed.
+    Verify {
+        /// The case file, or `-` for standard input.
+        file: String,
+    },
     /// Solve the worked examples of OPERATIONS.md §16 and a few degenerate cases, and
     /// print a table of status, kind, point and time.
     Demo,
@@ -34,6 +42,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse();
     match cli.command {
         Command::Solve { file } => cli::solve::run(&file),
+        Command::Verify { file } => cli::verify::run(&file),
         Command::Demo => cli::demo::run(),
     }
 }

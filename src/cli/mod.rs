@@ -2,3 +2,4 @@
 
 pub mod demo;
 pub mod solve;
+pub mod verify;

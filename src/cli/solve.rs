@@ -13,19 +13,15 @@ pub fn run(file: &str) -> ExitCode {
             return ExitCode::from(2);
         }
     };
-    let stdout = std::io::stdout();
-    let mut out = std::io::BufWriter::new(stdout.lock());
     let mut failed = 0usize;
-    for read in read_cases(&text) {
+    let lines = read_cases(&text).into_iter().map(|read| {
         let result = solve_case(read);
         if result.status == "error" {
             failed += 1;
         }
-        if writeln!(out, "{}", result.to_json_line()).is_err() {
-            return ExitCode::from(2);
-        }
-    }
-    if out.flush().is_err() {
+        result.to_json_line()
+    });
+    if write_lines(lines).is_err() {
         return ExitCode::from(2);
     }
     if failed > 0 {
@@ -36,7 +32,17 @@ pub fn run(file: &str) -> ExitCode {
     }
 }
 
-fn read_input(file: &str) -> std::io::Result<String> {
+/// Write JSON lines to standard output as they come.
+pub fn write_lines(lines: impl Iterator<Item = String>) -> std::io::Result<()> {
+    let stdout = std::io::stdout();
+    let mut out = std::io::BufWriter::new(stdout.lock());
+    for line in lines {
+        writeln!(out, "{line}")?;
+    }
+    out.flush()
+}
+
+pub fn read_input(file: &str) -> std::io::Result<String> {
     if file == "-" {
         let mut text = String::new();
         std::io::stdin().read_to_string(&mut text)?;

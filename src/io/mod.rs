@@ -8,8 +8,10 @@ pub mod number;
 pub mod objects;
 pub mod result;
 mod solve;
+mod verify;
 
 pub use case::{read_cases, Case, Op, Options, ReadCase};
 pub use number::{Double, Num};
 pub use objects::ObjectSpec;
 pub use solve::solve_case;
+pub use verify::verify_case;

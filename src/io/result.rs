@@ -120,6 +120,28 @@ pub struct CaseResult {
     pub segment: Option<SegmentOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorOut>,
+    /// `verify`: the verdict on each claimed item.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub claims: Option<Vec<ClaimOut>>,
+    /// `verify`: certified solutions that no claimed point is within the tolerance of.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub missed: Option<Vec<PointOut>>,
+}
+
+/// The verdict of `verify` on one claimed item (CASES.md "Claims").
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ClaimOut {
+    /// `kind`, or `points[i]` of the claim.
+    pub item: String,
+    /// `confirmed` | `refuted` | `undecided`.
+    pub verdict: &'static str,
+    /// The certificate level of the truth the verdict rests on.
+    pub status: &'static str,
+    /// The distance from the claimed point to the nearest true solution (rounded).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
 }
 
 impl CaseResult {
@@ -138,6 +160,8 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            claims: None,
+            missed: None,
             error: Some(ErrorOut {
                 kind: error.kind(),
                 field: error.field().to_string(),
@@ -162,6 +186,8 @@ impl CaseResult {
             line: None,
             segment: None,
             error: None,
+            claims: None,
+            missed: None,
         }
     }
 

@@ -1,0 +1,124 @@
+//! `geocert verify` (CASES.md "Claims"): claimed points are confirmed exactly when a
+//! true solution lies within the tolerance, refuted otherwise; missed solutions are
+//! listed; the exit status says whether everything was confirmed.
+
+use geocert::io::{read_cases, verify_case};
+use proptest::prelude::*;
+use rug::Rational;
+use serde_json::{json, Value};
+use std::process::Command;
+
+fn verify(case: Value) -> Value {
+    let read = read_cases(&case.to_string());
+    assert_eq!(read.len(), 1);
+    serde_json::from_str(&verify_case(read.into_iter().next().unwrap()).to_json_line()).unwrap()
+}
+
+fn line_plane(d: &str) -> Value {
+    json!([{"type": "line", "origin": [0, 0, 0], "dir": [1, 1, 1]},
+           {"type": "plane", "normal": [0, 0, 1], "d": d}])
+}
+
+#[test]
+fn confirmed_refuted_and_missed() {
+    let claim = json!({"kind": "points", "points": [{"xyz": [0.3333333333, 0.3333333333, 0.3333333333]}], "tolerance": 1e-9});
+    let r = verify(json!({"op": "intersect", "objects": line_plane("-1/3"), "claim": claim}));
+    assert_eq!(r["claims"][0]["verdict"], "confirmed"); // kind
+    assert_eq!(r["claims"][1]["verdict"], "confirmed");
+    assert_eq!(r["missed"], json!([]));
+
+    // The same claim with a tolerance below its error (√3 · (1/3 − 0.3333333333) ≈ 5.8e-11).
+    let mut tight = claim.clone();
+    tight["tolerance"] = json!(5e-11);
+    let r = verify(json!({"op": "intersect", "objects": line_plane("-1/3"), "claim": tight}));
+    assert_eq!(r["claims"][1]["verdict"], "refuted");
+    assert_eq!(r["missed"].as_array().unwrap().len(), 1);
+    let d = r["claims"][1]["distance"].as_f64().unwrap();
+    // (the float expression below loses ~7 digits to cancellation; the check is relative)
+    assert!((d / (3f64.sqrt() * (1.0 / 3.0 - 0.3333333333)) - 1.0).abs() < 1e-5);
+
+    // Claiming a point where the answer is empty is refuted; claiming `empty` where
+    // there is a point is refuted and the point is missed.
+    let segs = json!([{"type": "segment2", "a": [0, 0], "b": [1, 1]}, {"type": "segment2", "a": [0, 4], "b": [4, 0]}]);
+    let r =
+        verify(json!({"op": "intersect", "objects": segs, "claim": {"points": [{"xyz": [2, 2]}]}}));
+    assert_eq!(r["kind"], "empty");
+    assert_eq!(r["claims"][0]["verdict"], "refuted");
+    let crossing = json!([{"type": "segment2", "a": [0, 0], "b": [4, 4]}, {"type": "segment2", "a": [0, 4], "b": [4, 0]}]);
+    let r = verify(json!({"op": "intersect", "objects": crossing, "claim": {"kind": "empty"}}));
+    assert_eq!(r["claims"][0]["verdict"], "refuted");
+    assert_eq!(r["missed"][0]["xyz"], json!([2.0, 2.0]));
+
+    // Parameters instead of coordinates: t = 1/2 on both segments.
+    let r = verify(json!({"op": "intersect", "objects": crossing,
+        "claim": {"points": [{"params": [[0.5], [0.5000001]]}], "tolerance": 1e-6}}));
+    assert_eq!(r["claims"][0]["verdict"], "confirmed");
+
+    // A claim on a line answer is not checked yet, and says so.
+    let planes = json!([{"type": "plane", "normal": [0, 0, 1], "d": 0}, {"type": "plane", "normal": [0, 1, 0], "d": 0}]);
+    let r = verify(
+        json!({"op": "intersect", "objects": planes, "claim": {"kind": "line", "points": [{"xyz": [1, 0, 0]}]}}),
+    );
+    assert_eq!(r["claims"][0]["verdict"], "confirmed");
+    assert_eq!(r["claims"][1]["verdict"], "undecided");
+}
+
+#[test]
+fn bad_claims_are_errors_naming_the_field() {
+    let r = verify(json!({"op": "intersect", "objects": line_plane("0")}));
+    assert_eq!(r["error"]["field"], "claim");
+    let r = verify(
+        json!({"op": "intersect", "objects": line_plane("0"), "claim": {"points": [{"xyz": [0, 0, "x"]}]}}),
+    );
+    assert_eq!(r["error"]["field"], "claim.points[0].xyz[2]");
+    let r =
+        verify(json!({"op": "intersect", "objects": line_plane("0"), "claim": {"points": [{}]}}));
+    assert_eq!(r["error"]["field"], "claim.points[0]");
+    let r = verify(json!({"op": "intersect", "objects": line_plane("0"), "claim": {"pointz": []}}));
+    assert_eq!(r["error"]["kind"], "format");
+    let r =
+        verify(json!({"op": "intersect", "objects": line_plane("0"), "claim": {"tolerance": -1}}));
+    assert_eq!(r["error"]["field"], "claim.tolerance");
+}
+
+#[test]
+fn exit_status_says_whether_all_claims_hold() {
+    let run = |lines: &[Value]| {
+        let path = std::env::temp_dir().join(format!("geocert-verify-{}.jsonl", lines.len()));
+        let text: String = lines.iter().map(|l| format!("{l}\n")).collect();
+        std::fs::write(&path, text).unwrap();
+        let out = Command::new(env!("CARGO_BIN_EXE_geocert"))
+            .args(["verify", path.to_str().unwrap()])
+            .output()
+            .unwrap();
+        out.status.code()
+    };
+    let good = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1]}]}});
+    let bad = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1.5]}]}});
+    assert_eq!(run(&[good.clone()]), Some(0));
+    assert_eq!(run(&[good.clone(), bad]), Some(3));
+    assert_eq!(run(&[good, json!({"op": "intersect"})]), Some(1));
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(200))]
+
+    /// Line (0,0,0) + t(a, b, 1) against z = c meets at c·(a, b, 1) exactly; a claim at
+    /// offset e is confirmed exactly when |e| ≤ tolerance (decided in rationals here).
+    #[test]
+    fn verdict_is_the_exact_distance_test(a in -4.0f64..4.0, b in -4.0f64..4.0, c in -4.0f64..4.0,
+                                          e in prop::array::uniform3(-1e-6f64..1e-6),
+                                          tol in 0.0f64..2e-6) {
+        let q = |x: f64| Rational::from_f64(x).unwrap();
+        let truth = [q(c) * q(a), q(c) * q(b), q(c)];
+        let claimed: Vec<f64> = (0..3).map(|k| truth[k].to_f64() + e[k]).collect();
+        let d2: Rational = (0..3).map(|k| { let d = q(claimed[k]) - &truth[k]; d.clone() * d }).sum();
+        let expect = if d2 <= q(tol) * q(tol) { "confirmed" } else { "refuted" };
+        let r = verify(json!({"op": "intersect",
+            "objects": [{"type": "line", "origin": [0, 0, 0], "dir": [a, b, 1]},
+                        {"type": "plane", "normal": [0, 0, 1], "d": -c}],
+            "claim": {"points": [{"xyz": claimed}], "tolerance": tol}}));
+        prop_assert_eq!(r["claims"][0]["verdict"].as_str().unwrap(), expect);
+        prop_assert_eq!(r["missed"].as_array().unwrap().is_empty(), expect == "confirmed");
+    }
+}
