@@ -16,6 +16,7 @@ pub mod io;
 pub mod num;
 #[cfg(feature = "cgal")]
 pub mod oracle;
+pub mod robust;
 
 pub use certificate::{Arithmetic, Certified, Status};
 pub use error::GeomError;

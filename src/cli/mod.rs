@@ -1,4 +1,5 @@
 //! Sub-commands of the binary.
 
 pub mod demo;
+pub mod robustness;
 pub mod solve;
