@@ -195,7 +195,8 @@ impl fmt::Display for Table {
         writeln!(
             f,
             "Counts of wrong answers: verdict = wrong kind; >1ulp = right kind, a coordinate more than one ulp\n\
-             from the correctly rounded truth (certified: not exactly the correct rounding).\n\
+             from the correctly rounded truth (certified: not exactly the correct rounding); coordinates\n\
+             are compared for points, feet and segment ends (lines and planes: kind only).\n\
              float-only = geocert's filter tier alone: abstains (undecided) rather than errs.\n\
              Epick \"not run\": inputs outside [2^-60, 2^60] (2D: 2^-200..2^200), where an overflowing\n\
              Epick construction makes GMP raise SIGFPE and kills the process.\n"
