@@ -4,7 +4,6 @@
 //! `r = (24, 24)`; the orientation of `(p, q, r)` decided by each method against the
 //! exact sign. (The doubles next to 0.5 are 2⁻⁵⁴ apart, so `0.5 + i·2⁻⁵³` is exact.)
 
-use rug::Rational;
 use std::cmp::Ordering;
 
 use super::case::q;
@@ -28,7 +27,7 @@ pub fn exact(p: [f64; 2], q_: [f64; 2], r: [f64; 2]) -> Ordering {
     let (px, py) = (q(p[0]), q(p[1]));
     let a = (q(q_[0]) - &px) * (q(r[1]) - &py);
     let b = (q(q_[1]) - py) * (q(r[0]) - px);
-    Rational::from(a - b).cmp0()
+    (a - b).cmp0()
 }
 
 /// The classroom orientation in plain doubles: `(q_x − p_x)(r_y − p_y) − (q_y − p_y)(r_x − p_x)`.

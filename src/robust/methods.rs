@@ -5,7 +5,7 @@
 use nalgebra::Vector3;
 use rug::Rational;
 
-use super::answer::{self, Answer, Kind};
+use super::answer::{self, Answer};
 use super::case::{q, same, Case, Linear2In, LinearIn};
 use crate::certificate::{Arithmetic, Certified};
 use crate::geom::line_plane::{
@@ -211,6 +211,7 @@ pub fn epick(case: &Case) -> Option<Answer<f64>> {
 
 #[cfg(feature = "cgal")]
 fn epick_unguarded(case: &Case) -> Answer<f64> {
+    use super::answer::Kind;
     use super::case::{line, line2, segment, segment2};
     use crate::oracle::{epick, Intersection, OracleError};
     fn from<const D: usize>(r: Result<Intersection<f64, D>, OracleError>) -> Answer<f64> {
