@@ -2,7 +2,7 @@
 //! "Classroom examples of robustness problems in geometric computations" (CGTA 40,
 //! 2008), §4: `p = (0.5 + i·2⁻⁵³, 0.5 + j·2⁻⁵³)`, `i, j ∈ [0, 256)`, `q = (12, 12)`,
 //! `r = (24, 24)`; the orientation of `(p, q, r)` decided by each method against the
-//! exact sign. (The doubles next to 0.5 are 2⁻⁵⁴ apart, so `0.5 + i·2⁻⁵³` is exact.)
+//! exact sign. (The doubles in [0.5, 1) are 2⁻⁵³ apart, so `0.5 + i·2⁻⁵³` is exact.)
 
 use std::cmp::Ordering;
 
