@@ -17,6 +17,7 @@ pub mod num;
 pub mod ops;
 #[cfg(feature = "cgal")]
 pub mod oracle;
+pub mod robust;
 
 pub use certificate::{Arithmetic, Certified, Status};
 pub use error::GeomError;

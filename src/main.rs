@@ -36,6 +36,11 @@ enum Command {
     /// Solve the worked examples of OPERATIONS.md §16 and a few degenerate cases, and
     /// print a table of status, kind, point and time.
     Demo,
+    /// Built-in benchmarks: `robustness` (the robustness table).
+    Bench {
+        #[command(subcommand)]
+        which: cli::robustness::Bench,
+    },
 }
 
 fn main() -> ExitCode {
@@ -44,5 +49,6 @@ fn main() -> ExitCode {
         Command::Solve { file } => cli::solve::run(&file),
         Command::Verify { file } => cli::verify::run(&file),
         Command::Demo => cli::demo::run(),
+        Command::Bench { which } => cli::robustness::run(which),
     }
 }

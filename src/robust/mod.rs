@@ -1,0 +1,20 @@
+//! Robustness: seeded case generators for the linear constructions and the
+//! robustness table that runs them through plain f64, CGAL's Epick (feature `cgal`),
+//! geocert's float-only filter and geocert certified, against the exact truth
+//! (`geocert bench robustness`). The differential tests (tests/diff_*.rs) draw their
+//! cases from the same generators and compare geocert with CGAL's Epeck.
+//!
+//! Everything here is deterministic from a seed: the same seed gives the same cases
+//! and the same table.
+
+pub mod answer;
+pub mod case;
+pub mod gen;
+pub mod kettner;
+pub mod methods;
+pub mod rng;
+pub mod table;
+
+pub use case::Case;
+pub use gen::{case, Construction, Generator};
+pub use table::{robustness_table, Table};
