@@ -384,3 +384,31 @@ fn bad_input_comes_back_as_typed_errors() {
         other => panic!("{other:?}"),
     }
 }
+
+/// Epick's overflowing constructions would make GMP raise SIGFPE (an abort); such
+/// magnitudes are refused with a typed error naming the field, while Epeck answers.
+#[test]
+fn epick_refuses_magnitudes_it_would_abort_on() {
+    let seg = SegmentInput {
+        source: [1e150, -3e150, 2e150],
+        target: [-1e150, 2e150, -4e150],
+    };
+    let plane = PlaneInput::Parametric {
+        origin: [1e150, 1e150, 1e150],
+        u: [1e150, 0.0, 3e150],
+        v: [0.0, 2e150, 1e150],
+    };
+    match epick::intersect_segment_plane(&seg, &plane) {
+        Err(OracleError::Input(e)) => {
+            assert_eq!(e.kind(), "unsupported");
+            assert_eq!(e.field(), "segment[0]");
+        }
+        other => panic!("expected a refusal, got {other:?}"),
+    }
+    let tiny = Line2Input {
+        point: [1e-300, 0.0],
+        direction: [1.0, 1.0],
+    };
+    assert!(epick::intersect_lines_2d(&tiny, &tiny).is_err());
+    assert!(epeck::intersect_segment_plane(&seg, &plane).is_ok());
+}

@@ -10,12 +10,20 @@ use super::{
     FloatResult, FloatResult2, Line2Input, LineInput, OracleError, PlaneInput, Segment2Input,
     SegmentInput,
 };
+use crate::error::GeomError;
 
 /// Line ∩ plane (OPERATIONS.md §5.1): `Empty`, `Point` or `Line`.
 pub fn intersect_line_plane(
     line: &LineInput,
     plane: &PlaneInput,
 ) -> Result<FloatResult, OracleError> {
+    window(
+        &[
+            ("line", &[line.point, line.direction].concat()),
+            ("plane", &plane_values(plane)),
+        ],
+        WINDOW_BITS_3D,
+    )?;
     let (l, p) = (
         convert::line(line, "line")?,
         convert::plane(plane, "plane")?,
@@ -28,6 +36,13 @@ pub fn intersect_segment_plane(
     segment: &SegmentInput,
     plane: &PlaneInput,
 ) -> Result<FloatResult, OracleError> {
+    window(
+        &[
+            ("segment", &[segment.source, segment.target].concat()),
+            ("plane", &plane_values(plane)),
+        ],
+        WINDOW_BITS_3D,
+    )?;
     let (s, p) = (
         convert::segment(segment, "segment")?,
         convert::plane(plane, "plane")?,
@@ -37,6 +52,10 @@ pub fn intersect_segment_plane(
 
 /// Plane ∩ plane (OPERATIONS.md §8): `Empty`, `Line` or `Plane`.
 pub fn intersect_plane_plane(a: &PlaneInput, b: &PlaneInput) -> Result<FloatResult, OracleError> {
+    window(
+        &[("a", &plane_values(a)), ("b", &plane_values(b))],
+        WINDOW_BITS_3D,
+    )?;
     let (a, b) = (convert::plane(a, "a")?, convert::plane(b, "b")?);
     convert::float(bridge::epick_plane_plane(&a, &b))
 }
@@ -47,6 +66,14 @@ pub fn intersect_three_planes(
     b: &PlaneInput,
     c: &PlaneInput,
 ) -> Result<FloatResult, OracleError> {
+    window(
+        &[
+            ("a", &plane_values(a)),
+            ("b", &plane_values(b)),
+            ("c", &plane_values(c)),
+        ],
+        WINDOW_BITS_3D,
+    )?;
     let (a, b, c) = (
         convert::plane(a, "a")?,
         convert::plane(b, "b")?,
@@ -57,6 +84,13 @@ pub fn intersect_three_planes(
 
 /// The orthogonal projection of `point` onto `line` (OPERATIONS.md §3.1).
 pub fn project_point_line(point: &[f64; 3], line: &LineInput) -> Result<[f64; 3], OracleError> {
+    window(
+        &[
+            ("point", point),
+            ("line", &[line.point, line.direction].concat()),
+        ],
+        WINDOW_BITS_3D,
+    )?;
     let (q, l) = (
         convert::point(point, "point")?,
         convert::line(line, "line")?,
@@ -66,6 +100,10 @@ pub fn project_point_line(point: &[f64; 3], line: &LineInput) -> Result<[f64; 3]
 
 /// The orthogonal projection of `point` onto `plane` (OPERATIONS.md §3.3).
 pub fn project_point_plane(point: &[f64; 3], plane: &PlaneInput) -> Result<[f64; 3], OracleError> {
+    window(
+        &[("point", point), ("plane", &plane_values(plane))],
+        WINDOW_BITS_3D,
+    )?;
     let (q, p) = (
         convert::point(point, "point")?,
         convert::plane(plane, "plane")?,
@@ -75,6 +113,13 @@ pub fn project_point_plane(point: &[f64; 3], plane: &PlaneInput) -> Result<[f64;
 
 /// 2D line ∩ line (OPERATIONS.md §6.1): `Empty`, `Point` or `Line`.
 pub fn intersect_lines_2d(a: &Line2Input, b: &Line2Input) -> Result<FloatResult2, OracleError> {
+    window(
+        &[
+            ("a", &[a.point, a.direction].concat()),
+            ("b", &[b.point, b.direction].concat()),
+        ],
+        WINDOW_BITS_2D,
+    )?;
     let (a, b) = (convert::line2(a, "a")?, convert::line2(b, "b")?);
     convert::float(bridge::epick_lines_2d(&a, &b))
 }
@@ -84,6 +129,50 @@ pub fn intersect_segments_2d(
     a: &Segment2Input,
     b: &Segment2Input,
 ) -> Result<FloatResult2, OracleError> {
+    window(
+        &[
+            ("a", &[a.source, a.target].concat()),
+            ("b", &[b.source, b.target].concat()),
+        ],
+        WINDOW_BITS_2D,
+    )?;
     let (a, b) = (convert::segment2(a, "a")?, convert::segment2(b, "b")?);
     convert::float(bridge::epick_segments_2d(&a, &b))
+}
+
+/// The magnitude window Epick is asked within. Epick's double constructions (a plane's
+/// normal `u × v` and offset, the plane–plane line, a 2D line's coefficients) overflow
+/// or underflow for large and tiny inputs; its exact fallback then converts an infinite
+/// double with GMP's `mpq_set_d`, which raises SIGFPE and kills the process (found by
+/// tests/diff_*.rs). Non-zero magnitudes in `[2^-60, 2^60]` (3D; `2^±200` in 2D) keep
+/// every construction of these operations finite, so inputs outside are refused with
+/// an error instead of an abort.
+pub const WINDOW_BITS_3D: i32 = 60;
+/// See [`WINDOW_BITS_3D`].
+pub const WINDOW_BITS_2D: i32 = 200;
+
+fn window(args: &[(&str, &[f64])], bits: i32) -> Result<(), OracleError> {
+    let (lo, hi) = (2f64.powi(-bits), 2f64.powi(bits));
+    for (field, values) in args {
+        for (i, x) in values.iter().enumerate() {
+            let m = x.abs();
+            if m != 0.0 && !(lo..=hi).contains(&m) {
+                return Err(OracleError::Input(GeomError::Unsupported {
+                    field: format!("{field}[{i}]"),
+                    reason: format!(
+                        "Epick is only asked within magnitudes 2^-{bits}..2^{bits} (beyond, \
+                         an overflowing construction makes GMP raise SIGFPE)"
+                    ),
+                }));
+            }
+        }
+    }
+    Ok(())
+}
+
+fn plane_values(p: &PlaneInput) -> Vec<f64> {
+    match p {
+        PlaneInput::Parametric { origin, u, v } => [*origin, *u, *v].concat(),
+        PlaneInput::Implicit { a, b, c, d } => vec![*a, *b, *c, *d],
+    }
 }
