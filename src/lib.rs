@@ -6,10 +6,12 @@
 //!
 //! * [`num`] — numbers: the generic [`num::Real`] trait, filters, intervals, MPFR, rationals;
 //! * [`geom`] — linear objects and their exact, filtered predicates and constructions;
-//! * [`certify`] — Krawczyk, subdivision, precision escalation, singular roots;
+//! * [`curve`], [`surface`] — parametric curves and surfaces, implicit surfaces;
+//! * `certify` — Krawczyk, subdivision, precision escalation, singular roots;
 //! * [`io`] — the JSON case format (spec/CASES.md).
 
 pub mod certificate;
+pub mod curve;
 pub mod error;
 pub mod geom;
 pub mod io;
@@ -18,6 +20,8 @@ pub mod ops;
 #[cfg(feature = "cgal")]
 pub mod oracle;
 pub mod robust;
+pub mod surface;
+pub mod walk;
 
 pub use certificate::{Arithmetic, Certified, Status};
 pub use error::GeomError;

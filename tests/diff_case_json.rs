@@ -80,6 +80,7 @@ fn bits(o: &ObjectSpec) -> Vec<u64> {
         .concat(),
         ObjectSpec::Line2(l) => [n(&l.origin), n(&l.dir)].concat(),
         ObjectSpec::Segment2(s) => [n(&s.a), n(&s.b)].concat(),
+        ObjectSpec::Polyhedron(p) => p.vertices.iter().flat_map(|v| n(v)).collect(),
     }
 }
 
