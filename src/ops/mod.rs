@@ -2,6 +2,7 @@
 //! and its certificate live together here.
 
 pub mod classify;
+pub mod float;
 pub mod polyhedron;
 
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
