@@ -4,6 +4,8 @@
 pub mod classify;
 pub mod float;
 pub mod polyhedron;
+pub mod project;
+pub mod vector;
 
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use polyhedron::Polyhedron;

@@ -1,0 +1,6 @@
+//! Projection of a point onto curves and surfaces (OPERATIONS.md §3): every foot of a
+//! perpendicular, and the nearest point.
+
+pub mod curve;
+
+pub use curve::{foot_equation, project_point_on_curve_f64, CurveFeet, CurveFoot};
