@@ -73,9 +73,9 @@ pub fn project_point_on_curve_f64<C: Curve<D>, const D: usize>(
         };
         let (a, b) = (f(a_at), f(b_at));
         let jet = curve.jet(&t, 1);
-        let scale = norm_f64(&sub(p, &jet[0])) * norm_f64(&jet[1]);
-        all_zero &= f(t).abs() <= precision.delta * scale;
-        if a * b <= 0.0 {
+        let tol = precision.delta * norm_f64(&sub(p, &jet[0])) * norm_f64(&jet[1]);
+        all_zero &= f(t).abs() <= tol;
+        if changes_sign(a, b, tol) {
             guesses.push(t);
         }
     }
@@ -119,6 +119,13 @@ pub fn project_point_on_curve_f64<C: Curve<D>, const D: usize>(
     }
     feet.sort_by(|a, b| a.t.total_cmp(&b.t));
     CurveFeet::Finite(feet)
+}
+
+/// The event of (3.3)/(3.10): `a·b ≤ 0`, where a window end whose value is within
+/// `tol` of zero counts as zero (a root exactly at a window end on the domain boundary,
+/// such as a sphere's pole, must not be lost to rounding).
+pub(crate) fn changes_sign(a: f64, b: f64, tol: f64) -> bool {
+    a * b <= 0.0 || a.abs().min(b.abs()) <= tol
 }
 
 /// Keep a converged parameter in `[lo − δ, hi + δ]` (§0.4), clamped into the domain

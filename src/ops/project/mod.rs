@@ -2,5 +2,9 @@
 //! perpendicular, and the nearest point.
 
 pub mod curve;
+pub mod surface;
 
 pub use curve::{foot_equation, project_point_on_curve_f64, CurveFeet, CurveFoot};
+pub use surface::{
+    project_point_on_surface_f64, surface_foot_equations, IsoCurve, SurfaceFeet, SurfaceFoot,
+};
