@@ -1,53 +1,22 @@
 //! Point → curve projection, float path (OPERATIONS.md §3.2), against the worked
 //! example §16.3 and closed-form facts.
 
-use geocert::curve::Curve;
-use geocert::num::Real;
 use geocert::ops::float::Precision;
 use geocert::ops::project::{project_point_on_curve_f64, CurveFeet};
-use std::f64::consts::TAU;
 
-/// `(a cos t, b sin t)`, t ∈ [0, 2π], closed (test-local, so this test depends only on
-/// the Curve trait).
-struct Ellipse2 {
-    a: f64,
-    b: f64,
-}
-
-impl Curve<2> for Ellipse2 {
-    fn domain(&self) -> (f64, f64) {
-        (0.0, TAU)
-    }
-    fn is_closed(&self) -> bool {
-        true
-    }
-    fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 2]> {
-        let (c, s) = (t.cos(), t.sin());
-        let (a, b) = (t.lift(self.a), t.lift(self.b));
-        let rot = [
-            [c.clone(), s.clone()],
-            [-s.clone(), c.clone()],
-            [-c.clone(), -s.clone()],
-            [s, -c],
-        ];
-        rot[..=order]
-            .iter()
-            .map(|[x, y]| [a.clone() * x, b.clone() * y])
-            .collect()
-    }
-}
-
-fn samples(n: usize) -> Vec<(f64, f64)> {
-    let dt = TAU / n as f64;
-    (0..n).map(|i| (i as f64 * dt, dt)).collect()
-}
+mod ops_support;
+use ops_support::{samples, Ellipse2};
 
 #[test]
 fn all_four_feet_on_the_ellipse_of_16_3() {
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let CurveFeet::Finite(feet) =
-        project_point_on_curve_f64(&e, &[0.5, 0.2], &samples(20), &Precision::default(), false)
-    else {
+    let CurveFeet::Finite(feet) = project_point_on_curve_f64(
+        &e,
+        &[0.5, 0.2],
+        &samples(&e, 20),
+        &Precision::default(),
+        false,
+    ) else {
         panic!("finite expected")
     };
     let expected = [
@@ -67,9 +36,13 @@ fn all_four_feet_on_the_ellipse_of_16_3() {
 #[test]
 fn nearest_foot_of_16_3() {
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let CurveFeet::Finite(feet) =
-        project_point_on_curve_f64(&e, &[0.5, 0.2], &samples(20), &Precision::default(), true)
-    else {
+    let CurveFeet::Finite(feet) = project_point_on_curve_f64(
+        &e,
+        &[0.5, 0.2],
+        &samples(&e, 20),
+        &Precision::default(),
+        true,
+    ) else {
         panic!("finite expected")
     };
     assert_eq!(feet.len(), 1);
@@ -80,7 +53,13 @@ fn nearest_foot_of_16_3() {
 #[test]
 fn the_centre_of_a_circle_has_infinitely_many_feet() {
     let c = Ellipse2 { a: 2.0, b: 2.0 };
-    let r = project_point_on_curve_f64(&c, &[0.0, 0.0], &samples(20), &Precision::default(), false);
+    let r = project_point_on_curve_f64(
+        &c,
+        &[0.0, 0.0],
+        &samples(&c, 20),
+        &Precision::default(),
+        false,
+    );
     assert_eq!(r, CurveFeet::Infinite);
 }
 
@@ -89,9 +68,13 @@ fn a_point_on_the_major_axis_outside_has_the_two_vertices_as_feet() {
     // p = (5, 0) on the x axis beyond the vertex: feet at t = 0 (distance 2) and
     // t = π (distance 8); the evolute's cusp is at x = (a² − b²)/a = 5/3 < 5, so no other.
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let CurveFeet::Finite(feet) =
-        project_point_on_curve_f64(&e, &[5.0, 0.0], &samples(20), &Precision::default(), false)
-    else {
+    let CurveFeet::Finite(feet) = project_point_on_curve_f64(
+        &e,
+        &[5.0, 0.0],
+        &samples(&e, 20),
+        &Precision::default(),
+        false,
+    ) else {
         panic!("finite expected")
     };
     assert_eq!(feet.len(), 2, "{feet:?}");

@@ -1,84 +1,12 @@
 //! Point → surface projection, float path (OPERATIONS.md §3.4), against closed forms.
 //! The surfaces are test-local so this test depends only on the Surface trait.
 
-use geocert::num::Real;
 use geocert::ops::float::Precision;
 use geocert::ops::project::{project_point_on_surface_f64, SurfaceFeet};
-use geocert::surface::Surface;
-use std::f64::consts::{FRAC_PI_2, PI, TAU};
+use std::f64::consts::{FRAC_PI_2, TAU};
 
-/// Torus `((R + r cos v) cos u, (R + r cos v) sin u, r sin v)` on `[0, 2π]²`; with
-/// `r_major = 0` and `v ∈ [−π/2, π/2]` it is the sphere of §1.6.
-struct Torus {
-    major: f64,
-    minor: f64,
-    v_range: [f64; 2],
-}
-
-impl Surface for Torus {
-    fn domain(&self) -> ([f64; 2], [f64; 2]) {
-        ([0.0, TAU], self.v_range)
-    }
-    fn is_closed(&self) -> [bool; 2] {
-        [true, self.v_range == [0.0, TAU]]
-    }
-    fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
-        let (cu, su, cv, sv) = (u.cos(), u.sin(), v.cos(), v.sin());
-        let (big, r) = (u.lift(self.major), u.lift(self.minor));
-        let w = big + r.clone() * &cv; // R + r cos v
-        let z = u.zero_like();
-        let all = vec![
-            [w.clone() * &cu, w.clone() * &su, r.clone() * &sv],
-            [-(w.clone() * &su), w.clone() * &cu, z.clone()],
-            [
-                -(r.clone() * &sv * &cu),
-                -(r.clone() * &sv * &su),
-                r.clone() * &cv,
-            ],
-            [-(w.clone() * &cu), -(w * &su), z.clone()],
-            [r.clone() * &sv * &su, -(r.clone() * &sv * &cu), z],
-            [
-                -(r.clone() * &cv * &cu),
-                -(r.clone() * &cv * &su),
-                -(r * &sv),
-            ],
-        ];
-        all.into_iter().take([1, 3, 6][order.min(2)]).collect()
-    }
-}
-
-/// The unit square `(u, v, 0)`, `[0, 1]²`, open in both directions.
-struct Square;
-
-impl Surface for Square {
-    fn domain(&self) -> ([f64; 2], [f64; 2]) {
-        ([0.0, 1.0], [0.0, 1.0])
-    }
-    fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
-        let (z, o) = (u.zero_like(), u.one_like());
-        let all = vec![
-            [u.clone(), v.clone(), z.clone()],
-            [o.clone(), z.clone(), z.clone()],
-            [z.clone(), o, z.clone()],
-            [z.clone(), z.clone(), z.clone()],
-            [z.clone(), z.clone(), z.clone()],
-            [z.clone(), z.clone(), z],
-        ];
-        all.into_iter().take([1, 3, 6][order.min(2)]).collect()
-    }
-}
-
-fn nodes(s: &impl Surface, n: usize) -> Vec<[f64; 4]> {
-    let ([u0, u1], [v0, v1]) = s.domain();
-    let (du, dv) = ((u1 - u0) / n as f64, (v1 - v0) / n as f64);
-    let mut out = Vec::new();
-    for i in 0..=n {
-        for j in 0..=n {
-            out.push([u0 + i as f64 * du, v0 + j as f64 * dv, du, dv]);
-        }
-    }
-    out
-}
+mod ops_support;
+use ops_support::{nodes, Square, Torus};
 
 fn finite(r: SurfaceFeet) -> Vec<geocert::ops::project::SurfaceFoot> {
     match r {
@@ -178,7 +106,6 @@ fn a_point_on_the_axis_projects_to_the_pole_once() {
     assert!(feet
         .iter()
         .all(|f| (f.params[1].abs() - FRAC_PI_2).abs() < 1e-12));
-    let _ = PI;
 }
 
 #[test]

@@ -3,6 +3,7 @@
 
 pub mod classify;
 pub mod float;
+pub mod intersect;
 pub mod polyhedron;
 pub mod project;
 pub mod vector;

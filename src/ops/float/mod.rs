@@ -8,5 +8,5 @@ pub mod newton;
 pub mod precision;
 
 pub use merge::merge_duplicates;
-pub use newton::{newton, Coordinate, NewtonOutcome};
+pub use newton::{newton, newton_with, Coordinate, NewtonOutcome};
 pub use precision::Precision;

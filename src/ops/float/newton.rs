@@ -62,10 +62,24 @@ const KAPPA_SING: f64 = 1e-12;
 /// `x0` over the coordinates `coords`, at most `max_iter` steps (`K_max`: 32, 200
 /// for the linearly convergent tangency systems).
 pub fn newton<const K: usize>(
+    system: impl FnMut(&[f64; K]) -> ([f64; K], [[f64; K]; K]),
+    x0: [f64; K],
+    coords: &[Coordinate; K],
+    max_iter: usize,
+) -> NewtonOutcome<K> {
+    newton_with(system, x0, coords, max_iter, KAPPA_SING)
+}
+
+/// [`newton`] with the singularity threshold `kappa` in place of `κ_sing`. The
+/// tangency fallback systems ((5.5), (6.8)) are singular at their root by construction
+/// and converge only linearly towards it, so they run with `kappa = 0` (only an
+/// exactly singular pivot stops them).
+pub fn newton_with<const K: usize>(
     mut system: impl FnMut(&[f64; K]) -> ([f64; K], [[f64; K]; K]),
     x0: [f64; K],
     coords: &[Coordinate; K],
     max_iter: usize,
+    kappa: f64,
 ) -> NewtonOutcome<K> {
     let mut x = x0;
     for _ in 0..max_iter {
@@ -73,7 +87,7 @@ pub fn newton<const K: usize>(
         if f.iter().chain(j.iter().flatten()).any(|v| !v.is_finite()) {
             return NewtonOutcome::NotConverged(x);
         }
-        let Some(step) = solve_linear(j, f.map(|v| -v)) else {
+        let Some(step) = solve_linear_with(j, f.map(|v| -v), kappa) else {
             return NewtonOutcome::Singular(x);
         };
         let mut done = true;
@@ -93,7 +107,16 @@ pub fn newton<const K: usize>(
 
 /// Solve `a·x = b` by Gaussian elimination with partial pivoting; `None` when `a` is
 /// singular by the §0.4 test `|det a| ≤ κ_sing·Π|column norms|` (or not finite).
-pub fn solve_linear<const K: usize>(mut a: [[f64; K]; K], mut b: [f64; K]) -> Option<[f64; K]> {
+pub fn solve_linear<const K: usize>(a: [[f64; K]; K], b: [f64; K]) -> Option<[f64; K]> {
+    solve_linear_with(a, b, KAPPA_SING)
+}
+
+/// [`solve_linear`] with the threshold `kappa` in place of `κ_sing`.
+pub fn solve_linear_with<const K: usize>(
+    mut a: [[f64; K]; K],
+    mut b: [f64; K],
+    kappa: f64,
+) -> Option<[f64; K]> {
     let scale: f64 = (0..K)
         .map(|j| (0..K).map(|i| a[i][j] * a[i][j]).sum::<f64>().sqrt())
         .product();
@@ -117,7 +140,7 @@ pub fn solve_linear<const K: usize>(mut a: [[f64; K]; K], mut b: [f64; K]) -> Op
             b[row] -= factor * b[col];
         }
     }
-    if !(det.abs() > KAPPA_SING * scale) {
+    if !(det.abs() > kappa * scale) {
         return None;
     }
     let mut x = [0.0; K];

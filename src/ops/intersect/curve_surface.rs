@@ -1,0 +1,275 @@
+//! Curve ∩ surface, all points (OPERATIONS.md §5.2), float path.
+//!
+//! Unknowns `(u, v, t)` of (5.2) `s(u, v) − c(t) = 0`. Initial guesses come from
+//! intersecting tangent lines with tangent planes at pairs of walk samples (5.3);
+//! Newton (5.4) refines them; where the tangent line is (nearly) parallel to the
+//! tangent plane the tangency system (5.5)/(5.6) takes over and its solutions are
+//! verified (`|d| ≤ δ_len`) and classified (`Tangent` when `|N̂·ĉ'| < δ_tan`).
+
+use crate::curve::Curve;
+use crate::num::Real;
+use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
+use crate::ops::float::{newton, newton_with, Coordinate, NewtonOutcome, Precision};
+use crate::ops::vector::{cross, dot, norm_f64, sub};
+use crate::surface::Surface;
+
+/// One intersection point of a curve and a surface.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveSurfacePoint {
+    /// `(u, v)` on the surface.
+    pub surface_params: [f64; 2],
+    /// `t` on the curve.
+    pub t: f64,
+    /// `c(t)` (equal to `s(u, v)` within δ_len).
+    pub point: [f64; 3],
+    /// `|N̂·ĉ'| < δ_tan` (§5.2 "Verification").
+    pub tangent: bool,
+}
+
+/// (5.2) `F = s(u, v) − c(t)` with, on request, its Jacobian `[s_u | s_v | −c']`,
+/// written once for every number type (x = `[u, v, t]`).
+pub fn curve_surface_equations<T: Real, S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    x: &[T; 3],
+    jacobian: bool,
+) -> ([T; 3], Option<[[T; 3]; 3]>) {
+    let order = usize::from(jacobian);
+    let s = surface.jet(&x[0], &x[1], order);
+    let c = curve.jet(&x[2], order);
+    let f = sub(&s[0], &c[0]);
+    let j = jacobian
+        .then(|| std::array::from_fn(|i| [s[1][i].clone(), s[2][i].clone(), -c[1][i].clone()]));
+    (f, j)
+}
+
+/// The tangency system (5.5) `G = [d·s_u, d·s_v, d·c']` (`d = s − c`) with its
+/// Jacobian (5.6), written once for every number type.
+pub fn curve_surface_tangency_equations<T: Real, S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    x: &[T; 3],
+) -> ([T; 3], [[T; 3]; 3]) {
+    let s = surface.jet(&x[0], &x[1], 2);
+    let c = curve.jet(&x[2], 2);
+    let d = sub(&s[0], &c[0]);
+    let (su, sv, c1) = (&s[1], &s[2], &c[1]);
+    let g = [dot(&d, su), dot(&d, sv), dot(&d, c1)];
+    let j = [
+        [
+            dot(su, su) + dot(&d, &s[3]),
+            dot(sv, su) + dot(&d, &s[4]),
+            -dot(c1, su),
+        ],
+        [
+            dot(su, sv) + dot(&d, &s[4]),
+            dot(sv, sv) + dot(&d, &s[5]),
+            -dot(c1, sv),
+        ],
+        [dot(su, c1), dot(sv, c1), dot(&d, &c[2]) - dot(c1, c1)],
+    ];
+    (g, j)
+}
+
+/// All intersection points of `curve` and `surface` (§5.2), float only, from the
+/// curve samples `[(t, Δt)]` and surface nodes `[(u, v, Δu, Δv)]` of the walks (§2.3);
+/// `turn` is the walk's Δα (used by the tangency-candidate test).
+pub fn intersect_curve_surface_f64<S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    curve_samples: &[(f64, f64)],
+    surface_nodes: &[[f64; 4]],
+    turn: f64,
+    precision: &Precision,
+) -> Vec<CurveSurfacePoint> {
+    let ([u0, u1], [v0, v1]) = surface.domain();
+    let (t0, t1) = curve.domain();
+    let closed = surface.is_closed();
+    let coords = [
+        coordinate(u0, u1, closed[0], precision),
+        coordinate(v0, v1, closed[1], precision),
+        coordinate(t0, t1, curve.is_closed(), precision),
+    ];
+    let sin_sw = precision.sin_switch();
+    let mut guesses = Vec::new();
+    let mut length = 0.0f64;
+    for &(t, dt) in curve_samples {
+        let c = curve.jet(&t, 1);
+        length = length.max(norm_f64(&c[0]));
+        for &[u, v, du, dv] in surface_nodes {
+            let s = surface.jet(&u, &v, 1);
+            let n = cross(&s[1], &s[2]);
+            let f = sub(&s[0], &c[0]);
+            let nc = dot(&n, &c[1]);
+            let parallel = nc.abs() < sin_sw * norm_f64(&n) * norm_f64(&c[1]);
+            if !parallel {
+                // (5.4) at the pair of samples: the tangent line meets the tangent plane.
+                let x = [
+                    -dot(&f, &cross(&s[2], &c[1])) / nc,
+                    dot(&f, &cross(&s[1], &c[1])) / nc,
+                    dot(&f, &n) / nc,
+                ];
+                if x[0].abs() <= du && x[1].abs() <= dv && x[2].abs() <= dt {
+                    guesses.push([u + x[0], v + x[1], t + x[2]]);
+                }
+            } else {
+                // Tangency candidate (§5.2, reconstructed): the point of the tangent
+                // line nearest to the node, c* = c + τ·c', within the curve window; the
+                // foot of c* on the tangent plane within the surface windows; and the
+                // line close to the plane.
+                let tau = dot(&f, &c[1]) / dot(&c[1], &c[1]);
+                let near = std::array::from_fn(|i| c[0][i] + tau * c[1][i]);
+                let w = sub(&near, &s[0]);
+                let h = dot(&w, &n) / dot(&n, &n).sqrt();
+                let (g11, g12, g22) = (dot(&s[1], &s[1]), dot(&s[1], &s[2]), dot(&s[2], &s[2]));
+                let det = g11 * g22 - g12 * g12;
+                let (a, b) = (dot(&s[1], &w), dot(&s[2], &w));
+                let (x, y) = ((g22 * a - g12 * b) / det, (g11 * b - g12 * a) / det);
+                let reach = turn
+                    * (g11.sqrt() * du)
+                        .min(g22.sqrt() * dv)
+                        .min(norm_f64(&c[1]) * dt);
+                if tau.abs() <= dt && x.abs() <= du && y.abs() <= dv && h.abs() <= reach {
+                    guesses.push([u + x, v + y, t + tau]);
+                }
+            }
+        }
+    }
+    for &[u, v, _, _] in surface_nodes {
+        length = length.max(norm_f64(&surface.jet(&u, &v, 0)[0]));
+    }
+    let delta_len = precision.delta * length.max(1.0);
+    let mut found: Vec<(CurveSurfacePoint, f64)> = Vec::new();
+    for x0 in guesses {
+        let system = |x: &[f64; 3]| {
+            let (f, j) = curve_surface_equations(surface, curve, x, true);
+            (f, j.unwrap_or([[f64::NAN; 3]; 3]))
+        };
+        let transversal = match newton(system, x0, &coords, 32) {
+            NewtonOutcome::Converged(x) if !near_parallel(surface, curve, &x, sin_sw) => Some(x),
+            _ => None,
+        };
+        let x = match transversal {
+            Some(x) => x,
+            None => {
+                let fallback = |x: &[f64; 3]| curve_surface_tangency_equations(surface, curve, x);
+                // The fallback converges only linearly and its Jacobian becomes
+                // numerically singular near the tangency (§5.2): the last iterate is
+                // the candidate, and the verification below decides.
+                match newton_with(fallback, x0, &coords, 200, 0.0) {
+                    NewtonOutcome::Converged(x)
+                    | NewtonOutcome::Singular(x)
+                    | NewtonOutcome::NotConverged(x) => x,
+                    NewtonOutcome::Diverged(_) => continue,
+                }
+            }
+        };
+        if let Some(p) = accept(surface, curve, x, &coords, delta_len, precision) {
+            found.push(p);
+        }
+    }
+    // Tangential solutions are located only to about √ε (§5.2, §12): they are merged
+    // with δ_tan, transversal ones with δ.
+    let (tangent, transversal): (Vec<_>, Vec<_>) = found.into_iter().partition(|(p, _)| p.tangent);
+    let mut merged = merge(transversal, &coords, precision.delta, delta_len);
+    merged.extend(merge(
+        tangent,
+        &coords,
+        precision.delta_tan(),
+        delta_len.max(precision.delta_tan()),
+    ));
+    let mut points: Vec<CurveSurfacePoint> = merged.into_iter().map(|(p, _)| p).collect();
+    points.sort_by(|a, b| a.t.total_cmp(&b.t));
+    points
+}
+
+/// Merge duplicates (§0.4) with the relative tolerance `delta` on every parameter, then
+/// points that coincide in space within `delta_len` at the same curve parameter
+/// (poles: several `(u, v)`, one point).
+fn merge(
+    found: Vec<(CurveSurfacePoint, f64)>,
+    coords: &[Coordinate; 3],
+    delta: f64,
+    delta_len: f64,
+) -> Vec<(CurveSurfacePoint, f64)> {
+    let tolerances = coords.map(|c| ParamTolerance {
+        delta: delta * (c.hi - c.lo).max(1.0),
+        period: c.periodic.then_some(c.hi - c.lo),
+    });
+    let params =
+        |(p, _): &(CurveSurfacePoint, f64)| vec![p.surface_params[0], p.surface_params[1], p.t];
+    let merged = merge_duplicates(found, &tolerances, params, |(_, r)| *r);
+    let length = ParamTolerance {
+        delta: delta_len,
+        period: None,
+    };
+    let space = [length, length, length, tolerances[2]];
+    let in_space =
+        |(p, _): &(CurveSurfacePoint, f64)| vec![p.point[0], p.point[1], p.point[2], p.t];
+    merge_duplicates(merged, &space, in_space, |(_, r)| *r)
+}
+
+fn coordinate(lo: f64, hi: f64, periodic: bool, precision: &Precision) -> Coordinate {
+    let range = hi - lo;
+    Coordinate {
+        lo,
+        hi,
+        periodic,
+        eps: precision.eps * range.max(1.0),
+        margin: range,
+    }
+}
+
+/// `|N̂·ĉ'| < sin θ_sw` at `x = (u, v, t)`: Newton on (5.2) is abandoned for (5.5).
+fn near_parallel<S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    x: &[f64; 3],
+    sin_sw: f64,
+) -> bool {
+    sine(surface, curve, x) < sin_sw
+}
+
+/// `|N̂·ĉ'|` at `x = (u, v, t)`.
+fn sine<S: Surface, C: Curve<3>>(surface: &S, curve: &C, x: &[f64; 3]) -> f64 {
+    let s = surface.jet(&x[0], &x[1], 1);
+    let c = curve.jet(&x[2], 1);
+    let n = cross(&s[1], &s[2]);
+    dot(&n, &c[1]).abs() / (norm_f64(&n) * norm_f64(&c[1]))
+}
+
+/// §5.2 "Verification": keep a converged `x` inside the (δ-extended) domain whose gap
+/// `|s − c|` is at most δ_len; classify it as tangent when `|N̂·ĉ'| < δ_tan`.
+fn accept<S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    x: [f64; 3],
+    coords: &[Coordinate; 3],
+    delta_len: f64,
+    precision: &Precision,
+) -> Option<(CurveSurfacePoint, f64)> {
+    let mut y = x;
+    for (value, c) in y.iter_mut().zip(coords) {
+        let slack = precision.delta * (c.hi - c.lo);
+        if !c.periodic && !(c.lo - slack..=c.hi + slack).contains(value) {
+            return None;
+        }
+        *value = value.clamp(c.lo, c.hi);
+    }
+    let (f, _) = curve_surface_equations(surface, curve, &y, false);
+    let gap = norm_f64(&f);
+    if gap > delta_len {
+        return None;
+    }
+    let point = curve.jet(&y[2], 0)[0];
+    let tangent = sine(surface, curve, &y) < precision.delta_tan();
+    Some((
+        CurveSurfacePoint {
+            surface_params: [y[0], y[1]],
+            t: y[2],
+            point,
+            tangent,
+        },
+        gap,
+    ))
+}

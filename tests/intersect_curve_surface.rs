@@ -1,0 +1,149 @@
+//! Curve ∩ surface, float path (OPERATIONS.md §5.2), against the worked example §16.4
+//! and closed forms.
+
+use geocert::ops::float::Precision;
+use geocert::ops::intersect::intersect_curve_surface_f64;
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+mod ops_support;
+use ops_support::{nodes, samples, Line3, Torus};
+
+fn sphere(radius: f64) -> Torus {
+    Torus {
+        major: 0.0,
+        minor: radius,
+        v_range: [-FRAC_PI_2, FRAC_PI_2],
+    }
+}
+
+#[test]
+fn a_line_crosses_the_sphere_of_16_4_twice() {
+    let line = Line3 {
+        origin: [-3.0, 0.5, 0.2],
+        dir: [1.0, 0.0, 0.0],
+        range: [-10.0, 10.0],
+    };
+    let s = sphere(2.0);
+    let pts = intersect_curve_surface_f64(
+        &s,
+        &line,
+        &samples(&line, 1),
+        &nodes(&s, 16),
+        PI / 10.0,
+        &Precision::default(),
+    );
+    assert_eq!(pts.len(), 2, "{pts:?}");
+    let expected = [
+        (1.0738639716, [2.8876114213, 0.1001674212]),
+        (4.9261360284, [0.2539812323, 0.1001674212]),
+    ];
+    for (p, (t, uv)) in pts.iter().zip(expected) {
+        assert!((p.t - t).abs() < 1e-9 && !p.tangent, "{p:?}");
+        assert!((p.surface_params[0] - uv[0]).abs() < 1e-9);
+        assert!((p.surface_params[1] - uv[1]).abs() < 1e-9);
+    }
+    // Closed form: t = 3 ± √(4 − 0.25 − 0.04).
+    let h = (4.0f64 - 0.25 - 0.04).sqrt();
+    assert!((pts[0].t - (3.0 - h)).abs() < 1e-13 && (pts[1].t - (3.0 + h)).abs() < 1e-13);
+}
+
+#[test]
+fn the_tangent_line_of_16_4_touches_once() {
+    let line = Line3 {
+        origin: [-3.0, 2.0, 0.0],
+        dir: [1.0, 0.0, 0.0],
+        range: [-10.0, 10.0],
+    };
+    let s = sphere(2.0);
+    let pts = intersect_curve_surface_f64(
+        &s,
+        &line,
+        &samples(&line, 1),
+        &nodes(&s, 16),
+        PI / 10.0,
+        &Precision::default(),
+    );
+    assert_eq!(pts.len(), 1, "{pts:?}");
+    let p = &pts[0];
+    assert!(p.tangent);
+    // The tangency is located only to about √ε (§5.2).
+    assert!((p.t - 3.0).abs() < 1e-5, "{p:?}");
+    assert!((p.surface_params[0] - FRAC_PI_2).abs() < 1e-5 && p.surface_params[1].abs() < 1e-5);
+}
+
+#[test]
+fn a_line_through_a_torus_hits_it_four_times() {
+    // The x axis through the torus R = 3, r = 1: x = ±2, ±4.
+    let line = Line3 {
+        origin: [-5.0, 0.0, 0.0],
+        dir: [1.0, 0.0, 0.0],
+        range: [0.0, 10.0],
+    };
+    let torus = Torus {
+        major: 3.0,
+        minor: 1.0,
+        v_range: [0.0, TAU],
+    };
+    let pts = intersect_curve_surface_f64(
+        &torus,
+        &line,
+        &samples(&line, 1),
+        &nodes(&torus, 24),
+        PI / 10.0,
+        &Precision::default(),
+    );
+    let ts: Vec<f64> = pts.iter().map(|p| p.t).collect();
+    assert_eq!(ts.len(), 4, "{pts:?}");
+    for (t, x) in ts.iter().zip([1.0, 3.0, 7.0, 9.0]) {
+        assert!((t - x).abs() < 1e-12, "{ts:?}");
+    }
+    assert!(pts.iter().all(|p| !p.tangent));
+}
+
+#[test]
+fn a_line_missing_the_sphere_has_no_points() {
+    let line = Line3 {
+        origin: [-3.0, 2.001, 0.0],
+        dir: [1.0, 0.0, 0.0],
+        range: [-10.0, 10.0],
+    };
+    let s = sphere(2.0);
+    let pts = intersect_curve_surface_f64(
+        &s,
+        &line,
+        &samples(&line, 1),
+        &nodes(&s, 16),
+        PI / 10.0,
+        &Precision::default(),
+    );
+    assert!(pts.is_empty(), "{pts:?}");
+}
+
+#[test]
+fn a_line_tangent_to_the_inner_equator_of_a_torus_crosses_twice_and_touches_once() {
+    // y = 2 in the plane of the torus R = 3, r = 1 (annulus 2 ≤ ρ ≤ 4): crossings at
+    // x = ±√12, a tangency at (0, 2, 0).
+    let line = Line3 {
+        origin: [-5.0, 2.0, 0.0],
+        dir: [1.0, 0.0, 0.0],
+        range: [0.0, 10.0],
+    };
+    let torus = Torus {
+        major: 3.0,
+        minor: 1.0,
+        v_range: [0.0, TAU],
+    };
+    let pts = intersect_curve_surface_f64(
+        &torus,
+        &line,
+        &samples(&line, 1),
+        &nodes(&torus, 24),
+        PI / 10.0,
+        &Precision::default(),
+    );
+    assert_eq!(pts.len(), 3, "{pts:?}");
+    let r12 = 12f64.sqrt();
+    assert!((pts[0].t - (5.0 - r12)).abs() < 1e-12 && !pts[0].tangent);
+    assert!((pts[1].t - 5.0).abs() < 1e-5 && pts[1].tangent);
+    assert!((pts[2].t - (5.0 + r12)).abs() < 1e-12 && !pts[2].tangent);
+}
