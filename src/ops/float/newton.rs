@@ -134,13 +134,15 @@ pub fn solve_linear_with<const K: usize>(
         det *= a[col][col];
         for row in col + 1..K {
             let factor = a[row][col] / a[col][col];
-            for k in col..K {
-                a[row][k] -= factor * a[col][k];
+            let pivot_row = a[col];
+            for (x, p) in a[row][col..].iter_mut().zip(&pivot_row[col..]) {
+                *x -= factor * p;
             }
             b[row] -= factor * b[col];
         }
     }
-    if !(det.abs() > kappa * scale) {
+    // NaN compares as not greater: a non-finite determinant is singular too.
+    if det.abs().partial_cmp(&(kappa * scale)) != Some(std::cmp::Ordering::Greater) {
         return None;
     }
     let mut x = [0.0; K];
