@@ -1,5 +1,7 @@
 //! Intersections of curves and surfaces (OPERATIONS.md §5.2, §6.4–6.5, §7.2).
 
+pub mod curve_curve;
 pub mod curve_surface;
 
+pub use curve_curve::{intersect_curves_f64, CurveCurvePoint};
 pub use curve_surface::{intersect_curve_surface_f64, CurveSurfacePoint};

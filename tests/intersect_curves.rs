@@ -1,0 +1,120 @@
+//! Curve ∩ curve, float path (OPERATIONS.md §6.4, §6.5), against the worked examples
+//! §16.6 and closed forms.
+
+use geocert::ops::float::Precision;
+use geocert::ops::intersect::intersect_curves_f64;
+use std::f64::consts::{FRAC_PI_2, PI, TAU};
+
+mod ops_support;
+use ops_support::{samples, Ellipse2, Line3};
+
+fn wrap(t: f64) -> f64 {
+    t.rem_euclid(TAU)
+}
+
+#[test]
+fn circle_and_ellipse_of_16_6_meet_in_four_transversal_points() {
+    let circle = Ellipse2 { a: 2.0, b: 2.0 };
+    let ellipse = Ellipse2 { a: 3.0, b: 1.0 };
+    let pts = intersect_curves_f64(
+        &circle,
+        &ellipse,
+        &samples(&circle, 20),
+        &samples(&ellipse, 20),
+        &Precision::default(),
+    );
+    assert_eq!(pts.len(), 4, "{pts:?}");
+    let (x, y) = ((27.0f64 / 8.0).sqrt(), (5.0f64 / 8.0).sqrt());
+    let (ac, ae) = (0.4063777807, 0.9117382910);
+    let expected = [
+        ([x, y], [ac, ae]),
+        ([-x, y], [PI - ac, PI - ae]),
+        ([-x, -y], [PI + ac, PI + ae]),
+        ([x, -y], [TAU - ac, TAU - ae]),
+    ];
+    for (p, (xy, params)) in pts.iter().zip(expected) {
+        assert!(!p.tangent, "{p:?}");
+        assert!(
+            (p.point[0] - xy[0]).abs() < 1e-12 && (p.point[1] - xy[1]).abs() < 1e-12,
+            "{p:?}"
+        );
+        assert!(
+            (wrap(p.params[0]) - params[0]).abs() < 1e-9
+                && (wrap(p.params[1]) - params[1]).abs() < 1e-9
+        );
+    }
+}
+
+#[test]
+fn circle_inside_ellipse_of_16_6_touches_at_two_tangent_points() {
+    let circle = Ellipse2 { a: 1.0, b: 1.0 };
+    let ellipse = Ellipse2 { a: 3.0, b: 1.0 };
+    let pts = intersect_curves_f64(
+        &circle,
+        &ellipse,
+        &samples(&circle, 20),
+        &samples(&ellipse, 20),
+        &Precision::default(),
+    );
+    assert_eq!(pts.len(), 2, "{pts:?}");
+    for (p, t) in pts.iter().zip([FRAC_PI_2, 3.0 * FRAC_PI_2]) {
+        assert!(p.tangent, "{p:?}");
+        // A tangency is located to about √ε (§6.4).
+        assert!(
+            (p.params[0] - t).abs() < 1e-5 && (p.params[1] - t).abs() < 1e-5,
+            "{p:?}"
+        );
+        assert!(p.point[0].abs() < 1e-5 && (p.point[1].abs() - 1.0).abs() < 1e-10);
+    }
+}
+
+#[test]
+fn disjoint_ellipses_have_no_points() {
+    let small = Ellipse2 { a: 1.0, b: 0.5 };
+    let big = Ellipse2 { a: 3.0, b: 1.0 };
+    let pts = intersect_curves_f64(
+        &small,
+        &big,
+        &samples(&small, 20),
+        &samples(&big, 20),
+        &Precision::default(),
+    );
+    assert!(pts.is_empty(), "{pts:?}");
+}
+
+#[test]
+fn crossing_space_lines_meet_once_and_skew_ones_never() {
+    let a = Line3 {
+        origin: [0.0, 0.0, 0.0],
+        dir: [1.0, 0.0, 0.0],
+        range: [-5.0, 5.0],
+    };
+    let b = Line3 {
+        origin: [2.0, -1.0, 0.0],
+        dir: [0.0, 1.0, 0.0],
+        range: [-5.0, 5.0],
+    };
+    let pts = intersect_curves_f64(
+        &a,
+        &b,
+        &samples(&a, 1),
+        &samples(&b, 1),
+        &Precision::default(),
+    );
+    assert_eq!(pts.len(), 1, "{pts:?}");
+    assert_eq!(pts[0].params, [2.0, 1.0]);
+    assert_eq!(pts[0].point, [2.0, 0.0, 0.0]);
+    let skew = Line3 {
+        origin: [2.0, -1.0, 1e-3],
+        dir: [0.0, 1.0, 0.0],
+        range: [-5.0, 5.0],
+    };
+    let none = intersect_curves_f64(
+        &a,
+        &skew,
+        &samples(&a, 1),
+        &samples(&skew, 1),
+        &Precision::default(),
+    );
+    assert!(none.is_empty(), "{none:?}");
+}
