@@ -1,0 +1,93 @@
+//! Three surfaces, float path (OPERATIONS.md §7.2), with guesses found by the search.
+
+use geocert::ops::float::Precision;
+use geocert::ops::intersect::intersect_three_surfaces_f64;
+use geocert::surface::Surface;
+use std::f64::consts::FRAC_PI_2;
+
+mod ops_support;
+use ops_support::{nodes, Torus};
+
+/// A sphere of radius `r` centred at `c` (the §1.6 parametrisation, translated).
+struct Sphere {
+    c: [f64; 3],
+    r: f64,
+}
+
+impl Surface for Sphere {
+    fn domain(&self) -> ([f64; 2], [f64; 2]) {
+        Torus {
+            major: 0.0,
+            minor: self.r,
+            v_range: [-FRAC_PI_2, FRAC_PI_2],
+        }
+        .domain()
+    }
+    fn is_closed(&self) -> [bool; 2] {
+        [true, false]
+    }
+    fn jet<T: geocert::num::Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
+        let base = Torus {
+            major: 0.0,
+            minor: self.r,
+            v_range: [-FRAC_PI_2, FRAC_PI_2],
+        };
+        let mut j = base.jet(u, v, order);
+        for i in 0..3 {
+            j[0][i] = j[0][i].clone() + u.lift(self.c[i]);
+        }
+        j
+    }
+}
+
+#[test]
+fn three_unit_spheres_meet_in_two_points() {
+    // Centres (0,0,0), (1,0,0), (0,1,0), radius 1: x = y = 1/2, z = ±1/√2.
+    let a = Sphere {
+        c: [0.0, 0.0, 0.0],
+        r: 1.0,
+    };
+    let b = Sphere {
+        c: [1.0, 0.0, 0.0],
+        r: 1.0,
+    };
+    let c = Sphere {
+        c: [0.0, 1.0, 0.0],
+        r: 1.0,
+    };
+    let (na, nb, nc) = (nodes(&a, 16), nodes(&b, 16), nodes(&c, 16));
+    let pts = intersect_three_surfaces_f64((&a, &b, &c), [&na, &nb, &nc], &Precision::default());
+    assert_eq!(pts.len(), 2, "{pts:?}");
+    let z = 0.5f64.sqrt();
+    for (p, sign) in pts.iter().zip([-1.0, 1.0]) {
+        assert!(
+            (p.point[0] - 0.5).abs() < 1e-13 && (p.point[1] - 0.5).abs() < 1e-13,
+            "{p:?}"
+        );
+        assert!((p.point[2] - sign * z).abs() < 1e-13);
+        // Every parameter pair maps to the point on its own sphere.
+        for (s, params) in [&a, &b, &c].iter().zip(p.params) {
+            let q = s.jet(&params[0], &params[1], 0)[0];
+            assert!((0..3).all(|i| (q[i] - p.point[i]).abs() < 1e-12));
+        }
+    }
+}
+
+#[test]
+fn spheres_too_far_apart_have_no_common_point() {
+    let a = Sphere {
+        c: [0.0, 0.0, 0.0],
+        r: 1.0,
+    };
+    let b = Sphere {
+        c: [1.0, 0.0, 0.0],
+        r: 1.0,
+    };
+    let c = Sphere {
+        c: [0.0, 3.0, 0.0],
+        r: 1.0,
+    };
+    let (na, nb, nc) = (nodes(&a, 16), nodes(&b, 16), nodes(&c, 16));
+    let pts = intersect_three_surfaces_f64((&a, &b, &c), [&na, &nb, &nc], &Precision::default());
+    assert!(pts.is_empty(), "{pts:?}");
+}
