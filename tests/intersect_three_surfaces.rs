@@ -33,8 +33,8 @@ impl Surface for Sphere {
             v_range: [-FRAC_PI_2, FRAC_PI_2],
         };
         let mut j = base.jet(u, v, order);
-        for i in 0..3 {
-            j[0][i] = j[0][i].clone() + u.lift(self.c[i]);
+        for (x, c) in j[0].iter_mut().zip(self.c) {
+            *x = x.clone() + u.lift(c);
         }
         j
     }

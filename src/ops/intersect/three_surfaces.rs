@@ -213,7 +213,8 @@ fn linearised_guess(nodes: [&Node; 3]) -> Option<[f64; 6]> {
     let n = nodes.map(|m| cross(&m.su, &m.sv));
     let triple = dot(&n[0], &cross(&n[1], &n[2]));
     let scale = norm_f64(&n[0]) * norm_f64(&n[1]) * norm_f64(&n[2]);
-    if !(triple.abs() > 1e-12 * scale) {
+    // Nearly parallel tangent planes (or NaN): no linearised point.
+    if triple.abs().partial_cmp(&(1e-12 * scale)) != Some(std::cmp::Ordering::Greater) {
         return None;
     }
     let h = [0, 1, 2].map(|i| dot(&n[i], &nodes[i].point));
@@ -231,7 +232,8 @@ fn linearised_guess(nodes: [&Node; 3]) -> Option<[f64; 6]> {
         let det = g11 * g22 - g12 * g12;
         let (a, b) = (dot(&m.su, &w), dot(&m.sv, &w));
         let (du, dv) = ((g22 * a - g12 * b) / det, (g11 * b - g12 * a) / det);
-        if !(du.abs() <= m.window[0] && dv.abs() <= m.window[1]) {
+        let within = du.abs() <= m.window[0] && dv.abs() <= m.window[1];
+        if !within {
             return None;
         }
         guess[2 * i] = m.params[0] + du;
