@@ -2,6 +2,7 @@
 //! and its certificate live together here.
 
 pub mod classify;
+pub mod closed_surface;
 pub mod float;
 pub mod intersect;
 pub mod polyhedron;

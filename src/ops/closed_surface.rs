@@ -1,0 +1,154 @@
+//! Point against a closed analytic surface — sphere, ellipsoid, torus (OPERATIONS.md
+//! §4, with the implicit forms of §1.4/§1.6), decided exactly.
+//!
+//! The side is the sign of the implicit function `F` (§1.4: `F > 0` outside), and for
+//! double inputs `F(p)` is a rational number: the CASES.md frame is built from the
+//! unnormalised axis `Z'` and `X' = e − (e·Z')Z'/|Z'|²` (or `ref` in place of `e`),
+//! `Y' = Z' × X'`, and every normalisation enters `F` squared, as `(w·X')²/|X'|²`. So
+//! the sign of `F(p)` is decided exactly in `rug::Rational` — a point one ulp off the
+//! sphere is `inside` or `outside`, never `on` (CERTIFICATION.md).
+//!
+//! For a torus with `r ≥ R` (self-intersecting), `inside` is the region `F < 0` of the
+//! quartic `(|w|² + R² − r²)² − 4R²(|w|² − (w·Z)²)`.
+
+use super::classify::Side;
+use crate::certificate::{Arithmetic, Certified};
+use crate::num::ring::{cross3, dot3, sub3, Field, Ring, V3};
+use rug::Rational;
+use std::cmp::Ordering;
+
+/// A closed analytic surface as given in a case (CASES.md fields; doubles taken exactly).
+#[derive(Debug, Clone, PartialEq)]
+pub enum ClosedSurface {
+    Sphere {
+        center: [f64; 3],
+        radius: f64,
+    },
+    /// Semi-axes `a, b, c` along the frame's X, Y, Z.
+    Ellipsoid {
+        center: [f64; 3],
+        radii: [f64; 3],
+        axis: [f64; 3],
+        reference: Option<[f64; 3]>,
+    },
+    Torus {
+        center: [f64; 3],
+        major: f64,
+        minor: f64,
+        axis: [f64; 3],
+    },
+}
+
+fn q(x: f64) -> Rational {
+    <Rational as Field>::from_f64(x)
+}
+
+fn qv(v: &[f64; 3]) -> V3<Rational> {
+    v.map(q)
+}
+
+/// The unnormalised X axis of the CASES.md frame: `ref` (or the coordinate vector least
+/// aligned with `Z`, first on ties) minus its component along `Z`, exactly.
+pub fn frame_x_unnormalised(axis: &[f64; 3], reference: Option<&[f64; 3]>) -> V3<Rational> {
+    let z = qv(axis);
+    let e = match reference {
+        Some(r) => qv(r),
+        None => {
+            let mut k = 0;
+            for i in 1..3 {
+                if axis[i].abs() < axis[k].abs() {
+                    k = i;
+                }
+            }
+            std::array::from_fn(|i| {
+                if i == k {
+                    Rational::from(1)
+                } else {
+                    Rational::new()
+                }
+            })
+        }
+    };
+    let along = dot3(&e, &z).divide(&dot3(&z, &z));
+    std::array::from_fn(|i| e[i].minus(&along.times(&z[i])))
+}
+
+/// `F(p)` of the surface's implicit form (§1.4, §1.6), exactly.
+pub fn implicit_value_exact(surface: &ClosedSurface, p: &[f64; 3]) -> Rational {
+    let p = qv(p);
+    match surface {
+        ClosedSurface::Sphere { center, radius } => {
+            let w = sub3(&p, &qv(center));
+            dot3(&w, &w).minus(&q(*radius).times(&q(*radius)))
+        }
+        ClosedSurface::Ellipsoid {
+            center,
+            radii,
+            axis,
+            reference,
+        } => {
+            let w = sub3(&p, &qv(center));
+            let z = qv(axis);
+            let x = frame_x_unnormalised(axis, reference.as_ref());
+            let y = cross3(&z, &x);
+            let mut f = Rational::from(-1);
+            for (dir, r) in [x, y, z].iter().zip(radii) {
+                let c = dot3(&w, dir);
+                let r2 = q(*r).times(&q(*r));
+                f = f.plus(&c.times(&c).divide(&dot3(dir, dir).times(&r2)));
+            }
+            f
+        }
+        ClosedSurface::Torus {
+            center,
+            major,
+            minor,
+            axis,
+        } => {
+            let w = sub3(&p, &qv(center));
+            let z = qv(axis);
+            let rho2 = dot3(&w, &w);
+            let h = dot3(&w, &z);
+            let h2 = h.times(&h).divide(&dot3(&z, &z));
+            let (big2, small2) = (q(*major).times(&q(*major)), q(*minor).times(&q(*minor)));
+            let s = rho2.plus(&big2).minus(&small2);
+            let four_r2 = Rational::from(4).times(&big2);
+            s.times(&s).minus(&four_r2.times(&rho2.minus(&h2)))
+        }
+    }
+}
+
+/// The side of `p` relative to the closed surface, decided exactly (`Status::Exact`,
+/// complete). The surface data must be valid (positive radii, non-zero axis); the case
+/// reader checks that.
+pub fn classify_point_closed_surface(p: &[f64; 3], surface: &ClosedSurface) -> Certified<Side> {
+    let f = implicit_value_exact(surface, p);
+    let bits = f
+        .numer()
+        .significant_bits()
+        .max(f.denom().significant_bits());
+    let side = match f.cmp0() {
+        Ordering::Less => Side::Inside,
+        Ordering::Equal => Side::On,
+        Ordering::Greater => Side::Outside,
+    };
+    Certified::exact(side, Arithmetic::Rational, bits)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_frame_x_is_orthogonal_to_the_axis() {
+        let axis = [1.0, 2.0, 0.5];
+        let x = frame_x_unnormalised(&axis, None);
+        assert_eq!(dot3(&x, &qv(&axis)), Rational::new());
+        // e = +z (|0.5| is the smallest component).
+        assert_eq!(x[2].clone().cmp0(), Ordering::Greater);
+        assert_eq!(
+            frame_x_unnormalised(&[0.0, 0.0, 2.0], None),
+            qv(&[1.0, 0.0, 0.0])
+        );
+    }
+}
