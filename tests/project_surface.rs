@@ -131,3 +131,53 @@ fn nearest_on_an_open_patch_may_be_a_boundary_point() {
     ));
     assert!(all.is_empty(), "{all:?}");
 }
+
+#[test]
+fn projection_along_a_direction_onto_a_sphere() {
+    use geocert::ops::project::project_along_direction_f64;
+    // From (0.6, 0, 5) straight down onto the sphere of radius 1: hits at z = ±0.8,
+    // travel t = 4.2 and 5.8 with the unit direction (0, 0, −1); with dir (0, 0, −2)
+    // the travel halves.
+    let sphere = Torus {
+        major: 0.0,
+        minor: 1.0,
+        v_range: [-FRAC_PI_2, FRAC_PI_2],
+    };
+    let n = nodes(&sphere, 16);
+    let pts = project_along_direction_f64(
+        &sphere,
+        &[0.6, 0.0, 5.0],
+        &[0.0, 0.0, -2.0],
+        &n,
+        0.3,
+        &Precision::default(),
+        false,
+    );
+    assert_eq!(pts.len(), 2, "{pts:?}");
+    assert!(
+        (pts[0].t - 2.1).abs() < 1e-12 && (pts[1].t - 2.9).abs() < 1e-12,
+        "{pts:?}"
+    );
+    assert!((pts[0].point[2] - 0.8).abs() < 1e-12 && (pts[1].point[2] + 0.8).abs() < 1e-12);
+    let nearest = project_along_direction_f64(
+        &sphere,
+        &[0.6, 0.0, 5.0],
+        &[0.0, 0.0, 1.0],
+        &n,
+        0.3,
+        &Precision::default(),
+        true,
+    );
+    assert_eq!(nearest.len(), 1);
+    assert!((nearest[0].t + 4.2).abs() < 1e-12, "{nearest:?}");
+    let miss = project_along_direction_f64(
+        &sphere,
+        &[1.5, 0.0, 5.0],
+        &[0.0, 0.0, 1.0],
+        &n,
+        0.3,
+        &Precision::default(),
+        false,
+    );
+    assert!(miss.is_empty());
+}
