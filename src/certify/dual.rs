@@ -307,7 +307,7 @@ mod tests {
     #[test]
     fn jacobian_matches_hand_derivatives() {
         let (x, y) = (0.7_f64, 1.3_f64);
-        let (v, j) = value_and_jacobian(&[x, y], |d| f(d));
+        let (v, j) = value_and_jacobian(&[x, y], f);
         assert_eq!(v, f(&[x, y]));
         let r2 = x * x + y * y;
         let expect = [
@@ -346,11 +346,11 @@ mod tests {
             Interval::from_bounds(0.6, 0.8),
             Interval::from_bounds(1.2, 1.4),
         ];
-        let (_, jb) = value_and_jacobian(&bx, |d| f(d));
+        let (_, jb) = value_and_jacobian(&bx, f);
         // Interior points: a rounded f64 derivative there is far from the box's bounds.
         for &x in &[0.65, 0.7, 0.75] {
             for &y in &[1.25, 1.31, 1.35] {
-                let (_, jp) = value_and_jacobian(&[x, y], |d| f(d));
+                let (_, jp) = value_and_jacobian(&[x, y], f);
                 for i in 0..2 {
                     for k in 0..2 {
                         assert!(jb[i][k].contains_value(jp[i][k]), "{x} {y} {i}{k}");

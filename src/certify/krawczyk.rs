@@ -108,7 +108,7 @@ pub fn tighten<S: System, I: CertInterval>(sys: &S, mut e: IBox<I>, steps: usize
             None => break,
         }
         let after: f64 = boxes::widths(&e).into_iter().fold(0.0, f64::max);
-        if !(after < 0.5 * before) {
+        if after.is_nan() || after >= 0.5 * before {
             break;
         }
     }
@@ -133,7 +133,10 @@ pub fn verify_near<S: System, I: CertInterval>(
         .map(|(c, &r)| c.clone() + c.with_bounds(-r, r))
         .collect();
     for _ in 0..8 {
-        if boxes::widths(&x).iter().any(|w| !(*w <= max_width)) {
+        if boxes::widths(&x)
+            .iter()
+            .any(|w| w.is_nan() || *w > max_width)
+        {
             return None;
         }
         match krawczyk(sys, &x) {

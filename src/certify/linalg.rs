@@ -60,9 +60,10 @@ pub fn inverse_gauss_jordan<I: IntervalLike>(a: &[Vec<I>]) -> Option<Vec<Vec<I>>
                 continue;
             }
             let f = m[i][col].clone();
-            for j in 0..2 * n {
-                let t = (m[col][j].clone() * &f).mid_interval();
-                m[i][j] = (m[i][j].clone() - &t).mid_interval();
+            let pivot_row = m[col].clone();
+            for (x, p) in m[i].iter_mut().zip(&pivot_row) {
+                let t = (p.clone() * &f).mid_interval();
+                *x = (x.clone() - &t).mid_interval();
             }
         }
     }

@@ -43,8 +43,9 @@ pub fn newton_f64<S: System>(sys: &S, x0: &[f64], max_iter: usize) -> Option<(Ve
 }
 
 /// Newton at the precision of the point box `x0` (every iterate rounded to a point of
-/// that precision). Returns the last iterate and whether the steps became negligible at
-/// that precision (below `2^-(bits-8)·max(1, |x|)`).
+/// that precision). Returns the last iterate and whether it settled: the steps fell below
+/// `2^-(bits-8)·max(1, |x|)`, or stopped shrinking twice in a row once below
+/// `2^-(bits/2)·max(1, |x|)` (the rounding noise of an ill-conditioned root).
 pub fn newton_point<S: System, I: CertInterval>(
     sys: &S,
     x0: &[I],
@@ -53,7 +54,9 @@ pub fn newton_point<S: System, I: CertInterval>(
     let n = x0.len();
     let bits = x0.first()?.precision_bits();
     let tol = (-(f64::from(bits) - 8.0)).exp2();
+    let noise = (-f64::from(bits) / 2.0).exp2();
     let mut x: IBox<I> = x0.iter().map(|v| v.mid_interval()).collect();
+    let (mut previous, mut stalls) = (f64::INFINITY, 0);
     for _ in 0..max_iter {
         let (f, j) = sys.eval_with_jacobian(&x);
         if f.len() != n || j.len() != n {
@@ -62,19 +65,27 @@ pub fn newton_point<S: System, I: CertInterval>(
         let y = I::approx_inverse(&mid_matrix(&j))?;
         let fm: Vec<I> = f.iter().map(|v| v.mid_interval()).collect();
         let step = mat_vec(&y, &fm);
-        let mut small = true;
+        let (mut small, mut relative) = (true, 0.0f64);
         for (xi, si) in x.iter_mut().zip(&step) {
             let s = si.mid_interval();
             if s.is_empty() || !s.mid().is_finite() {
                 return None;
             }
-            small &= s.mag() <= tol * xi.mag().max(1.0);
+            let scale = xi.mag().max(1.0);
+            small &= s.mag() <= tol * scale;
+            relative = relative.max(s.mag() / scale);
             *xi = (xi.clone() - &s).mid_interval();
         }
         if x.iter().any(|v| v.is_empty() || !v.mid().is_finite()) {
             return None;
         }
-        if small {
+        stalls = if relative <= noise && relative > previous / 1.5 {
+            stalls + 1
+        } else {
+            0
+        };
+        previous = relative;
+        if small || stalls >= 2 {
             return Some((x, true));
         }
     }
