@@ -7,10 +7,11 @@
 //! * [`num`] — numbers: the generic [`num::Real`] trait, filters, intervals, MPFR, rationals;
 //! * [`geom`] — linear objects and their exact, filtered predicates and constructions;
 //! * [`curve`], [`surface`] — parametric curves and surfaces, implicit surfaces;
-//! * `certify` — Krawczyk, subdivision, precision escalation, singular roots;
+//! * [`certify`] — Krawczyk, subdivision, precision escalation, singular roots;
 //! * [`io`] — the JSON case format (spec/CASES.md).
 
 pub mod certificate;
+pub mod certify;
 pub mod curve;
 pub mod error;
 pub mod geom;

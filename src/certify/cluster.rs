@@ -1,0 +1,124 @@
+//! Deciding a small region where subdivision got stuck — a cluster of narrow boxes
+//! around a (nearly) singular root — in one go (CERTIFICATION.md "Tangency and
+//! near-tangency"): a proven near miss (no root), two proven transversal roots, or a
+//! `verified_singular` box (a double root of a perturbed problem, at most two roots of
+//! the exact one).
+//!
+//! The proofs are [`super::count`] (at most two roots, or none, in a region covering the
+//! cluster), [`super::krawczyk`] (each of two roots) and [`super::deflate`] (the double
+//! root of the perturbed problem). Newton from points along the null direction supplies
+//! the candidate roots; it only guides, never proves.
+
+use super::boxes::{self, IBox};
+use super::count::{at_most_two_roots, no_root, Local};
+use super::deflate::{double_root, DoubleRoot};
+use super::krawczyk::{verify_near, VerifiedRoot};
+use super::level::CertInterval;
+use super::linalg::null_vectors;
+use super::newton::newton_point;
+use super::system::System;
+
+/// What was proven about a cluster's box.
+#[derive(Debug, Clone)]
+pub enum ClusterVerdict<I> {
+    /// No root in the box.
+    NoRoot,
+    /// Exactly two roots in a region containing the box, each verified (they may lie
+    /// outside the box itself).
+    TwoRoots(Vec<VerifiedRoot<I>>),
+    /// At most two roots, counted with multiplicity, in `enclosure` (which contains the
+    /// box), and a double root of a perturbed problem in `enclosure`.
+    Singular {
+        enclosure: IBox<I>,
+        double_root: DoubleRoot<I>,
+    },
+}
+
+/// Decide the box `hull` (module doc), or `None` if nothing could be proven. A
+/// `Singular` verdict is the weakest: a caller may try a higher precision for a
+/// `NoRoot` or `TwoRoots` one.
+pub fn decide_cluster<S: System, I: CertInterval>(
+    sys: &S,
+    hull: &[I],
+) -> Option<ClusterVerdict<I>> {
+    let m0 = boxes::midpoint_f64(hull);
+    let (v0, u0, _) = null_vectors(&sys.jacobian(&m0))?;
+    let near = boxes::inflate(hull, 1.0, 0.0);
+    let dr = double_root(sys, &boxes::midpoint(hull), &v0, &u0, 1.0)
+        .filter(|d| boxes::is_subset(&d.x, &near));
+    let (target, m) = match &dr {
+        Some(d) => (boxes::hull(hull, &d.x), boxes::midpoint_f64(&d.x)),
+        None => (hull.to_vec(), m0),
+    };
+    let (v, u, _) = null_vectors(&sys.jacobian(&m))?;
+    let local = Local::new(sys, &m, &v, &u)?;
+    let count = at_most_two_roots(local, &target)?;
+    if no_root(&count, 0.0) {
+        return Some(ClusterVerdict::NoRoot);
+    }
+    // A perturbation enclosure containing 0 means the roots (if two) are closer than this
+    // precision resolves: skip the Newton search, the caller escalates.
+    let resolvable = dr.as_ref().map_or(true, |d| !d.e.contains_zero());
+    if resolvable {
+        if let Some(two) = two_roots(sys, &count, &target) {
+            return Some(ClusterVerdict::TwoRoots(two));
+        }
+    }
+    let d = dr?;
+    (count.covers(&target) && boxes::is_subset(&d.x, &target)).then_some(ClusterVerdict::Singular {
+        enclosure: target,
+        double_root: d,
+    })
+}
+
+/// Two verified roots inside the count region, found by Newton from points along the
+/// null direction on both sides of the centre (each candidate proven by Krawczyk with
+/// epsilon-inflation; a candidate inside the uniqueness region of an earlier one is the
+/// same root).
+fn two_roots<S: System, I: CertInterval>(
+    sys: &S,
+    count: &super::count::CountRegion<'_, S, I>,
+    target: &[I],
+) -> Option<Vec<VerifiedRoot<I>>> {
+    let n = target.len();
+    let reach = count.region[n - 1].mag();
+    let bits = target[0].precision_bits();
+    let ulps = (-(f64::from(bits) - 8.0)).exp2();
+    let zero = target[0].zero_like();
+    let mut roots: Vec<VerifiedRoot<I>> = Vec::new();
+    for j in [1, 3, 5, 8, 12, 17, 24, 33, 45] {
+        for sign in [1.0, -1.0] {
+            let s = sign * reach * (-f64::from(j)).exp2();
+            let mut w = vec![zero.clone(); n];
+            w[n - 1] = zero.lift(s);
+            let start: IBox<I> = count
+                .local
+                .to_global(&w)
+                .iter()
+                .map(|x| x.mid_interval())
+                .collect();
+            let Some((x, _)) = newton_point(sys, &start, 100) else {
+                continue;
+            };
+            if !count.covers(&x) || roots.iter().any(|r| boxes::is_subset(&x, &r.region)) {
+                continue;
+            }
+            let radius: Vec<f64> = x.iter().map(|v| ulps * v.mag().max(1.0)).collect();
+            let Some(v) = verify_near(sys, &x, &radius, reach) else {
+                continue;
+            };
+            if !count.covers(&v.enclosure)
+                || roots
+                    .iter()
+                    .any(|r| boxes::meets(&r.enclosure, &v.enclosure))
+            {
+                continue;
+            }
+            roots.push(v);
+            if roots.len() == 2 {
+                return Some(roots);
+            }
+        }
+    }
+    None
+}

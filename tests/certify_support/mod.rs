@@ -1,0 +1,217 @@
+//! Systems with known roots for the certifier's tests, and their roots computed
+//! independently in closed form with 300-bit MPFR (never by the code under test).
+
+#![allow(dead_code)]
+
+use geocert::certify::{Root, System};
+use geocert::num::{MpfrInterval, Real};
+use rug::ops::Pow;
+use rug::Float;
+
+/// The precision of the reference roots.
+pub const TRUTH_BITS: u32 = 300;
+
+/// Two circles `|x − a|² = ra2 + ea`, `|x − b|² = rb2`, each constant a double (the
+/// perturbation `ea` is kept apart so that `1 + 2⁻¹⁰⁰` can be written exactly).
+#[derive(Debug, Clone, Copy)]
+pub struct Circles {
+    pub a: [f64; 2],
+    pub ra2: f64,
+    pub ea: f64,
+    pub b: [f64; 2],
+    pub rb2: f64,
+}
+
+impl Circles {
+    /// Unit circles at the origin and at `(d, 0)`.
+    pub fn unit_pair(d: f64) -> Self {
+        Circles {
+            a: [0.0, 0.0],
+            ra2: 1.0,
+            ea: 0.0,
+            b: [d, 0.0],
+            rb2: 1.0,
+        }
+    }
+
+    /// The intersection points in closed form at 300 bits: with `d = |b − a|`,
+    /// `ℓ = (ra² − rb² + d²)/(2d)` along `b − a` and `h² = ra² − ℓ²` across. Returns the
+    /// points and `h²` (negative: no root; zero: a double root).
+    pub fn truth(&self) -> (Vec<[Float; 2]>, Float) {
+        let p = TRUTH_BITS;
+        let f = |v: f64| Float::with_val(p, v);
+        let (a0, a1, b0, b1) = (f(self.a[0]), f(self.a[1]), f(self.b[0]), f(self.b[1]));
+        let ra2 = f(self.ra2) + f(self.ea);
+        let rb2 = f(self.rb2);
+        let (dx, dy) = (Float::with_val(p, &b0 - &a0), Float::with_val(p, &b1 - &a1));
+        let d2 = Float::with_val(p, dx.clone().pow(2u32) + dy.clone().pow(2u32));
+        let d = d2.clone().sqrt();
+        let num = Float::with_val(p, &ra2 - &rb2) + &d2;
+        let l = num / Float::with_val(p, 2u32 * &d);
+        let h2 = Float::with_val(p, &ra2 - l.clone().pow(2u32));
+        if h2 < 0 {
+            return (Vec::new(), h2);
+        }
+        let h = h2.clone().sqrt();
+        let (ux, uy) = (Float::with_val(p, &dx / &d), Float::with_val(p, &dy / &d));
+        let base = [
+            Float::with_val(p, &a0 + Float::with_val(p, &l * &ux)),
+            Float::with_val(p, &a1 + Float::with_val(p, &l * &uy)),
+        ];
+        let mut out = Vec::new();
+        for s in [1i32, -1] {
+            let hs = Float::with_val(p, &h * s);
+            out.push([
+                Float::with_val(p, &base[0] - Float::with_val(p, &hs * &uy)),
+                Float::with_val(p, &base[1] + Float::with_val(p, &hs * &ux)),
+            ]);
+            if h2 == 0 {
+                break;
+            }
+        }
+        (out, h2)
+    }
+}
+
+impl System for Circles {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let c = |v: f64| x[0].lift(v);
+        vec![
+            (x[0].clone() - c(self.a[0])).sqr() + (x[1].clone() - c(self.a[1])).sqr()
+                - c(self.ra2)
+                - c(self.ea),
+            (x[0].clone() - c(self.b[0])).sqr() + (x[1].clone() - c(self.b[1])).sqr() - c(self.rb2),
+        ]
+    }
+}
+
+/// The unit sphere `s(u, v) = (cos v cos u, cos v sin u, sin v)` and the line
+/// `p(t) = (1, t, 0)`, tangent to it at `(1, 0, 0)`: unknowns `(t, u, v)`, equations
+/// `p(t) − s(u, v) = 0`, one double root at `(0, 0, 0)`.
+pub struct LineSphere;
+
+impl System for LineSphere {
+    fn dim(&self) -> usize {
+        3
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let (t, u, v) = (&x[0], &x[1], &x[2]);
+        let cv = v.cos();
+        vec![
+            t.one_like() - cv.clone() * u.cos(),
+            t.clone() - cv * u.sin(),
+            -v.sin(),
+        ]
+    }
+}
+
+/// Three spheres `s_i(u_i, v_i) = c_i + r_i (cos v cos u, cos v sin u, sin v)` and the
+/// three-surface system of OPERATIONS.md §7.2 written as `s₁ = s₂`, `s₂ = s₃` in the
+/// unknowns `(u₁, v₁, u₂, v₂, u₃, v₃)`.
+pub struct ThreeSpheres {
+    pub c: [[f64; 3]; 3],
+    pub r: [f64; 3],
+}
+
+fn sphere_point<T: Real>(c: &[f64; 3], r: f64, u: &T, v: &T) -> [T; 3] {
+    let rr = u.lift(r);
+    let cv = v.cos();
+    [
+        u.lift(c[0]) + rr.clone() * cv.clone() * u.cos(),
+        u.lift(c[1]) + rr.clone() * cv * u.sin(),
+        u.lift(c[2]) + rr * v.sin(),
+    ]
+}
+
+impl System for ThreeSpheres {
+    fn dim(&self) -> usize {
+        6
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let p: Vec<[T; 3]> = (0..3)
+            .map(|i| sphere_point(&self.c[i], self.r[i], &x[2 * i], &x[2 * i + 1]))
+            .collect();
+        let mut out = Vec::with_capacity(6);
+        for (a, b) in [(0, 1), (1, 2)] {
+            for (pa, pb) in p[a].iter().zip(&p[b]) {
+                out.push(pa.clone() - pb);
+            }
+        }
+        out
+    }
+}
+
+impl ThreeSpheres {
+    /// Unit spheres at the origin, `(1, 0, 0)` and `(0, 1, 0)`: they meet at
+    /// `(1/2, 1/2, ±1/√2)`. The parameters of the upper point on each sphere at 300 bits:
+    /// `u = atan2(d_y, d_x)`, `v = asin(d_z)` for the unit direction `d = p − c`.
+    pub fn unit_triple() -> (Self, Vec<Float>) {
+        let sys = ThreeSpheres {
+            c: [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            r: [1.0; 3],
+        };
+        let p = TRUTH_BITS;
+        let half = Float::with_val(p, 0.5);
+        let z = Float::with_val(p, 0.5).sqrt();
+        let point = [half.clone(), half, z];
+        let mut truth = Vec::new();
+        for c in &sys.c {
+            let d: Vec<Float> = (0..3)
+                .map(|k| Float::with_val(p, &point[k] - c[k]))
+                .collect();
+            truth.push(Float::with_val(p, d[1].atan2_ref(&d[0])));
+            truth.push(Float::with_val(p, d[2].asin_ref()));
+        }
+        (sys, truth)
+    }
+}
+
+/// `√x − c` (defined on `x ≥ 0` only).
+pub struct SqrtMinus(pub f64);
+
+impl System for SqrtMinus {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        vec![x[0].sqrt() - x[0].lift(self.0)]
+    }
+}
+
+/// True if the 300-bit point lies in the root's exact (MPFR) enclosure.
+pub fn encloses(root: &Root, point: &[Float]) -> bool {
+    root.enclosure_mpfr
+        .iter()
+        .zip(point)
+        .all(|(iv, x)| iv.contains_float(x))
+        && root
+            .enclosure
+            .iter()
+            .zip(point)
+            .all(|(iv, x)| MpfrInterval::from_interval(iv, 53).contains_float(x))
+}
+
+/// The number of the given points inside the root's enclosure.
+pub fn count_inside(root: &Root, points: &[Vec<Float>]) -> usize {
+    points.iter().filter(|p| encloses(root, p)).count()
+}
+
+/// True if the 300-bit point lies in the f64 box.
+pub fn in_box(bx: &[geocert::num::Interval], point: &[Float]) -> bool {
+    bx.iter()
+        .zip(point)
+        .all(|(iv, x)| MpfrInterval::from_interval(iv, 53).contains_float(x))
+}
+
+/// A 300-bit point from doubles.
+pub fn point(x: &[f64]) -> Vec<Float> {
+    x.iter().map(|&v| Float::with_val(TRUTH_BITS, v)).collect()
+}
+
+/// A circle root as a vector.
+pub fn as_vec(p: &[Float; 2]) -> Vec<Float> {
+    p.to_vec()
+}
