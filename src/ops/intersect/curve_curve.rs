@@ -7,6 +7,7 @@
 //! are verified (`|c₁ − c₂| ≤ δ_len`) and classified (`Tangent` when
 //! `|ĉ₁' × ĉ₂'| < δ_tan`).
 
+use crate::certify::System;
 use crate::curve::Curve;
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
@@ -198,4 +199,38 @@ fn merge<const D: usize>(
         .into_iter()
         .map(|(p, _)| p)
         .collect()
+}
+
+/// (6.5) in 2D: `c₁(t₁) − c₂(t₂) = 0`, unknowns `(t₁, t₂)`.
+pub struct CurveCurve2System<'a, A, B> {
+    pub a: &'a A,
+    pub b: &'a B,
+}
+
+impl<A: Curve<2>, B: Curve<2>> System for CurveCurve2System<'_, A, B> {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let (p, q) = (&self.a.jet(&x[0], 0)[0], &self.b.jet(&x[1], 0)[0]);
+        vec![p[0].clone() - &q[0], p[1].clone() - &q[1]]
+    }
+}
+
+/// (6.10): the closest-approach system of two space curves, unknowns `(t₁, t₂)`. Its
+/// roots are intersections only where the gap `|c₁ − c₂|` vanishes; the caller proves
+/// that separately.
+pub struct ClosestApproachSystem<'a, A, B> {
+    pub a: &'a A,
+    pub b: &'a B,
+}
+
+impl<A: Curve<3>, B: Curve<3>> System for ClosestApproachSystem<'_, A, B> {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let x = [x[0].clone(), x[1].clone()];
+        closest_approach_equations(self.a, self.b, &x).0.to_vec()
+    }
 }

@@ -6,6 +6,7 @@
 //! tangent plane the tangency system (5.5)/(5.6) takes over and its solutions are
 //! verified (`|d| ≤ δ_len`) and classified (`Tangent` when `|N̂·ĉ'| < δ_tan`).
 
+use crate::certify::System;
 use crate::curve::Curve;
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
@@ -272,4 +273,22 @@ fn accept<S: Surface, C: Curve<3>>(
         },
         gap,
     ))
+}
+
+/// (5.2): `s(u, v) − c(t) = 0`, unknowns `(u, v, t)`.
+pub struct CurveSurfaceSystem<'a, S, C> {
+    pub surface: &'a S,
+    pub curve: &'a C,
+}
+
+impl<S: Surface, C: Curve<3>> System for CurveSurfaceSystem<'_, S, C> {
+    fn dim(&self) -> usize {
+        3
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let x = [x[0].clone(), x[1].clone(), x[2].clone()];
+        curve_surface_equations(self.surface, self.curve, &x, false)
+            .0
+            .to_vec()
+    }
 }

@@ -10,6 +10,7 @@
 //! (7.3) with the Jacobian (7.4); solutions are verified (`|r − q|, |s − q| ≤ δ_len`)
 //! and merged (§0.4).
 
+use crate::certify::System;
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, Coordinate, NewtonOutcome, Precision};
@@ -273,4 +274,23 @@ fn inside(x: [f64; 6], coords: &[Coordinate; 6], precision: &Precision) -> Optio
         *value = value.clamp(c.lo, c.hi);
     }
     Some(y)
+}
+
+/// (7.3): `r(u,v) − q(x,y) = s(a,b) − q(x,y) = 0`, six unknowns.
+pub struct ThreeSurfaceSystem<'a, R, S, Q> {
+    pub r: &'a R,
+    pub s: &'a S,
+    pub q: &'a Q,
+}
+
+impl<R: Surface, S: Surface, Q: Surface> System for ThreeSurfaceSystem<'_, R, S, Q> {
+    fn dim(&self) -> usize {
+        6
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let x: [T; 6] = std::array::from_fn(|i| x[i].clone());
+        three_surface_equations(self.r, self.s, self.q, &x, false)
+            .0
+            .to_vec()
+    }
 }

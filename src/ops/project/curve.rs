@@ -4,6 +4,7 @@
 //! curve's samples and emits a guess where `f` changes sign over the sample's window
 //! (3.3); Newton (3.4) refines it; results are filtered to the domain and merged (§0.4).
 
+use crate::certify::System;
 use crate::curve::Curve;
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
@@ -142,4 +143,55 @@ fn foot<C: Curve<D>, const D: usize>(curve: &C, p: &[f64; D], t: f64) -> CurveFo
     let point = curve.jet(&t, 0)[0];
     let distance = norm_f64(&sub(&point, &lift(&t, p)));
     CurveFoot { t, point, distance }
+}
+
+/// (3.2): `(p − c(t))·c'(t) = 0`, unknown `t`.
+pub struct CurveFootSystem<'a, C, const D: usize> {
+    pub curve: &'a C,
+    pub point: [f64; D],
+}
+
+impl<C: Curve<D>, const D: usize> System for CurveFootSystem<'_, C, D> {
+    fn dim(&self) -> usize {
+        1
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        vec![foot_equation(self.curve, &lift(&x[0], &self.point), &x[0], false).0]
+    }
+}
+
+/// All feet from `p` onto `curve` (§3.2), certified (spec/CERTIFICATION.md): each foot
+/// a root of (3.2) in a verified box (`verified_singular` where `p` lies on the
+/// evolute), `complete` when subdivision covered the domain. The float answers (from
+/// `samples`) are certified individually when the search is incomplete.
+///
+/// A continuum of feet (the centre of a circle) cannot be enclosed by isolated boxes:
+/// the search then spends its budget and the answer is `undecided`.
+pub fn project_point_on_curve<C: Curve<D>, const D: usize>(
+    curve: &C,
+    p: &[f64; D],
+    samples: &[(f64, f64)],
+    precision: &Precision,
+    opts: &crate::ops::certified::Options,
+) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<D>>>, crate::GeomError> {
+    use crate::ops::certified::{certify_roots, curve_point, curve_unknowns, CertifiedPoint};
+    let guesses: Vec<Vec<f64>> =
+        match project_point_on_curve_f64(curve, p, samples, precision, false) {
+            CurveFeet::Finite(f) => f.iter().map(|x| vec![x.t]).collect(),
+            CurveFeet::Infinite => Vec::new(),
+        };
+    let sys = CurveFootSystem { curve, point: *p };
+    let roots = certify_roots(&sys, &curve_unknowns(curve), &guesses, opts)?;
+    Ok(roots.map(|rs| {
+        rs.into_iter()
+            .map(|root| {
+                let (point, point_box) = curve_point(curve, root.params[0], &root.enclosure[0]);
+                CertifiedPoint {
+                    root,
+                    point,
+                    point_box,
+                }
+            })
+            .collect()
+    }))
 }

@@ -5,7 +5,9 @@ pub mod curve;
 pub mod direction;
 pub mod surface;
 
-pub use curve::{foot_equation, project_point_on_curve_f64, CurveFeet, CurveFoot};
+pub use curve::{
+    foot_equation, project_point_on_curve, project_point_on_curve_f64, CurveFeet, CurveFoot,
+};
 pub use direction::{project_along_direction_f64, Ray};
 pub use surface::{
     project_point_on_surface_f64, surface_foot_equations, IsoCurve, SurfaceFeet, SurfaceFoot,

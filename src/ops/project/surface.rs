@@ -8,6 +8,7 @@
 //! "Nearest", exact mode).
 
 use super::curve::{changes_sign, project_point_on_curve_f64, CurveFeet};
+use crate::certify::System;
 use crate::curve::Curve;
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
@@ -274,5 +275,23 @@ impl<S: Surface> Curve<3> for IsoCurve<'_, S> {
                 .map(|&k| j[k].clone())
                 .collect()
         }
+    }
+}
+
+/// (3.9): `(p − s)·s_u = (p − s)·s_v = 0`, unknowns `(u, v)`.
+pub struct SurfaceFootSystem<'a, S> {
+    pub surface: &'a S,
+    pub point: [f64; 3],
+}
+
+impl<S: Surface> System for SurfaceFootSystem<'_, S> {
+    fn dim(&self) -> usize {
+        2
+    }
+    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let p = lift(&x[0], &self.point);
+        surface_foot_equations(self.surface, &p, &x[0], &x[1], false)
+            .0
+            .to_vec()
     }
 }

@@ -1,0 +1,266 @@
+//! Certification of the curved operations (spec/CERTIFICATION.md): each operation's
+//! system, written once generic over [`crate::num::Real`] beside its float path, is
+//! handed to [`crate::certify`]:
+//!
+//! 1. [`crate::certify::solve`] over the whole parameter domain — subdivision with
+//!    exclusion, Krawczyk uniqueness, MPFR escalation, the singular certificate — so
+//!    that `complete: true` means that no other solution exists;
+//! 2. when the box budget or precision cap leaves part of the domain undecided, the
+//!    float answers are certified one by one ([`crate::certify::certify_root`]) so that
+//!    every answer the fast path found still carries its proof (`complete: false`).
+//!
+//! Periodic parameters: a root on the seam of a closed curve or surface can be found at
+//! both ends of the domain; the copy whose enclosure, shifted by the period, lies inside
+//! the other's (where that root is proven unique) is dropped.
+
+use crate::certificate::{Arithmetic, Certified, Status};
+use crate::certify::{self, Root, System};
+use crate::error::GeomError;
+use crate::num::Interval;
+
+pub use crate::certify::Options;
+
+/// The unknowns of an operation: their domain and which are periodic.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Unknowns {
+    pub domain: Vec<[f64; 2]>,
+    pub periodic: Vec<bool>,
+}
+
+/// One certified solution: a root of the operation's system.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CertifiedRoot {
+    /// The parameters (estimate).
+    pub params: Vec<f64>,
+    /// An enclosure of the parameters, outward rounded; with `status` verified it holds
+    /// exactly this one root.
+    pub enclosure: Vec<Interval>,
+    /// `Verified`, `VerifiedSingular` or `Undecided` (e.g. a root proven to exist in a
+    /// box that straddles a non-periodic domain boundary).
+    pub status: Status,
+    /// The most roots the enclosure holds, with multiplicity (2 for a tangency).
+    pub max_roots: u32,
+    pub bits: u32,
+    pub perturbation: Option<f64>,
+    /// Why the status is undecided.
+    pub reason: Option<String>,
+}
+
+impl CertifiedRoot {
+    fn from_root(r: &Root, boundary: bool) -> CertifiedRoot {
+        let (status, reason) = if boundary && r.status != Status::Undecided {
+            (
+                Status::Undecided,
+                Some("a root exists in a box that straddles the domain boundary".to_string()),
+            )
+        } else {
+            (r.status, None)
+        };
+        CertifiedRoot {
+            params: r.estimate.clone(),
+            enclosure: r.enclosure.clone(),
+            status,
+            max_roots: r.max_roots,
+            bits: r.bits,
+            perturbation: r.perturbation,
+            reason,
+        }
+    }
+
+    /// A tangential (double) solution.
+    pub fn is_singular(&self) -> bool {
+        self.status == Status::VerifiedSingular
+    }
+}
+
+/// Every root of `sys` over `unknowns`, certified (module doc); `guesses` are the float
+/// answers, certified one by one when the subdivision is not complete.
+pub fn certify_roots<S: System>(
+    sys: &S,
+    unknowns: &Unknowns,
+    guesses: &[Vec<f64>],
+    opts: &Options,
+) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
+    let solved = certify::solve(sys, &unknowns.domain, opts)?;
+    let mut roots: Vec<CertifiedRoot> = Vec::new();
+    for r in &solved.value.roots {
+        push_unique(&mut roots, CertifiedRoot::from_root(r, false), unknowns);
+    }
+    for r in &solved.value.boundary_roots {
+        let on_seam_only = unknowns
+            .domain
+            .iter()
+            .zip(&unknowns.periodic)
+            .zip(&r.enclosure)
+            .all(|((&[lo, hi], &p), x)| p || (lo <= x.lo() && x.hi() <= hi));
+        push_unique(
+            &mut roots,
+            CertifiedRoot::from_root(r, !on_seam_only),
+            unknowns,
+        );
+    }
+    let mut complete = solved.complete;
+    let mut bits = solved.bits;
+    let mut reason = solved.reason.clone();
+    if !complete {
+        for g in guesses {
+            if roots.iter().any(|r| contains(&r.enclosure, g, unknowns)) {
+                continue;
+            }
+            let c = certify::certify_root(sys, g, opts)?;
+            if c.status != Status::Undecided {
+                bits = bits.max(c.bits);
+                push_unique(
+                    &mut roots,
+                    CertifiedRoot::from_root(&c.value, false),
+                    unknowns,
+                );
+            }
+        }
+    }
+    let status = roots
+        .iter()
+        .fold(Status::Verified, |s, r| s.weakest(r.status));
+    if roots.iter().any(|r| r.status == Status::Undecided) {
+        complete = false;
+        reason.get_or_insert_with(|| "a root straddles the domain boundary".into());
+    }
+    let perturbation = roots.iter().filter_map(|r| r.perturbation).reduce(f64::max);
+    roots.sort_by(|a, b| {
+        a.params
+            .partial_cmp(&b.params)
+            .unwrap_or(std::cmp::Ordering::Equal)
+    });
+    // Nothing proven at all: an incomplete search that certified no root.
+    let status = if !complete && roots.is_empty() {
+        Status::Undecided
+    } else {
+        status
+    };
+    Ok(Certified {
+        value: roots,
+        status,
+        complete,
+        arithmetic: if bits > 53 {
+            Arithmetic::Mpfr
+        } else {
+            Arithmetic::Interval
+        },
+        bits,
+        reason: if complete { None } else { reason },
+        perturbation,
+    })
+}
+
+/// Add `root` unless it is the seam copy of a root already found (module doc).
+fn push_unique(roots: &mut Vec<CertifiedRoot>, root: CertifiedRoot, unknowns: &Unknowns) {
+    let duplicate = roots.iter().any(|r| {
+        shifted_inside(&root.enclosure, &r.enclosure, unknowns)
+            || shifted_inside(&r.enclosure, &root.enclosure, unknowns)
+    });
+    if duplicate {
+        // Keep the copy whose enclosure lies inside the domain.
+        if let Some(r) = roots
+            .iter_mut()
+            .find(|r| shifted_inside(&r.enclosure, &root.enclosure, unknowns))
+        {
+            if r.status == Status::Undecided && root.status != Status::Undecided {
+                *r = root;
+            }
+        }
+        return;
+    }
+    roots.push(root);
+}
+
+/// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
+/// −P), lies inside `b`.
+fn shifted_inside(a: &[Interval], b: &[Interval], unknowns: &Unknowns) -> bool {
+    let n = a.len();
+    let shifts: Vec<Vec<f64>> = (0..n)
+        .map(|i| {
+            let [lo, hi] = unknowns.domain[i];
+            if unknowns.periodic[i] {
+                vec![0.0, hi - lo, lo - hi]
+            } else {
+                vec![0.0]
+            }
+        })
+        .collect();
+    // Each coordinate independently: the shift sets are tiny (≤ 3 per coordinate).
+    (0..n).all(|i| {
+        shifts[i].iter().any(|&s| {
+            let shifted = a[i].clone() + Interval::point(s);
+            !shifted.is_empty() && shifted.is_subset(&b[i])
+        })
+    })
+}
+
+/// The point `x`, shifted by whole periods, lies in the box.
+fn contains(enclosure: &[Interval], x: &[f64], unknowns: &Unknowns) -> bool {
+    let point: Vec<Interval> = x.iter().map(|&v| Interval::point(v)).collect();
+    shifted_inside(&point, enclosure, unknowns)
+}
+
+/// A certified solution with its point: the parameters' root and the point's
+/// estimate and enclosure (the shape evaluated in intervals over the parameter box).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CertifiedPoint<const D: usize> {
+    pub root: CertifiedRoot,
+    /// The point at the parameters' estimate (f64 evaluation).
+    pub point: [f64; D],
+    /// An enclosure of the point over the parameter enclosure.
+    pub point_box: [Interval; D],
+}
+
+/// `Unknowns` of a curve's parameter.
+pub fn curve_unknowns<C: crate::curve::Curve<D>, const D: usize>(c: &C) -> Unknowns {
+    let (lo, hi) = c.domain();
+    Unknowns {
+        domain: vec![[lo, hi]],
+        periodic: vec![c.is_closed()],
+    }
+}
+
+/// `Unknowns` of a surface's two parameters.
+pub fn surface_unknowns<S: crate::surface::Surface>(s: &S) -> Unknowns {
+    let (u, v) = s.domain();
+    let closed = s.is_closed();
+    Unknowns {
+        domain: vec![u, v],
+        periodic: closed.to_vec(),
+    }
+}
+
+impl Unknowns {
+    /// The unknowns of several objects, one after the other.
+    pub fn concat(parts: &[Unknowns]) -> Unknowns {
+        Unknowns {
+            domain: parts.iter().flat_map(|p| p.domain.clone()).collect(),
+            periodic: parts.iter().flat_map(|p| p.periodic.clone()).collect(),
+        }
+    }
+}
+
+/// A curve's point and its enclosure over the parameter box `t`.
+pub fn curve_point<C: crate::curve::Curve<D>, const D: usize>(
+    c: &C,
+    t: f64,
+    t_box: &Interval,
+) -> ([f64; D], [Interval; D]) {
+    let p = c.jet(&t, 0)[0];
+    let b = c.jet(t_box, 0).swap_remove(0);
+    (p, b)
+}
+
+/// A surface's point and its enclosure over the parameter box.
+pub fn surface_point<S: crate::surface::Surface>(
+    s: &S,
+    uv: [f64; 2],
+    u_box: &Interval,
+    v_box: &Interval,
+) -> ([f64; 3], [Interval; 3]) {
+    let p = s.jet(&uv[0], &uv[1], 0)[0];
+    let b = s.jet(u_box, v_box, 0).swap_remove(0);
+    (p, b)
+}
