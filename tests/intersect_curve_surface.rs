@@ -147,3 +147,105 @@ fn a_line_tangent_to_the_inner_equator_of_a_torus_crosses_twice_and_touches_once
     assert!((pts[1].t - 5.0).abs() < 1e-5 && pts[1].tangent);
     assert!((pts[2].t - (5.0 + r12)).abs() < 1e-12 && !pts[2].tangent);
 }
+
+fn certified(
+    line: &Line3,
+    s: &Torus,
+) -> geocert::Certified<Vec<geocert::ops::certified::CertifiedPoint<3>>> {
+    geocert::ops::intersect::intersect_curve_surface(
+        s,
+        line,
+        &samples(line, 1),
+        &nodes(s, 16),
+        PI / 10.0,
+        &Precision::default(),
+        &Default::default(),
+    )
+    .expect("valid input")
+}
+
+fn contains(b: &geocert::num::Interval, x: &rug::Float) -> bool {
+    b.lo() <= *x && *x <= b.hi()
+}
+
+#[test]
+fn certified_crossings_of_16_4_contain_the_true_parameters() {
+    use geocert::Status;
+    let line = Line3 {
+        origin: [-3.0, 0.5, 0.2],
+        dir: [1.0, 0.0, 0.0],
+        range: [-10.0, 10.0],
+    };
+    let r = certified(&line, &sphere(2.0));
+    assert!(r.complete, "{:?}", r.reason);
+    assert_eq!(r.status, Status::Verified);
+    assert_eq!(r.value.len(), 2);
+    // t = 3 ± √3.71 with the doubles 0.5 and 0.2 taken exactly.
+    let prec = 300;
+    let h2 = rug::Float::with_val(prec, 4)
+        - rug::Float::with_val(prec, 0.5f64).square()
+        - rug::Float::with_val(prec, 0.2f64).square();
+    let h = h2.sqrt();
+    let ts = [
+        rug::Float::with_val(prec, 3) - &h,
+        rug::Float::with_val(prec, 3) + &h,
+    ];
+    for (p, t) in r.value.iter().zip(ts) {
+        assert!(
+            contains(&p.root.enclosure[2], &t),
+            "{:?} misses {t}",
+            p.root.enclosure[2]
+        );
+        assert_eq!(p.root.status, Status::Verified);
+    }
+}
+
+#[test]
+fn certified_tangency_of_16_4_is_singular_and_encloses_the_touching_point() {
+    use geocert::Status;
+    let line = Line3 {
+        origin: [-3.0, 2.0, 0.0],
+        dir: [1.0, 0.0, 0.0],
+        range: [-10.0, 10.0],
+    };
+    let r = certified(&line, &sphere(2.0));
+    assert_eq!(r.value.len(), 1, "{r:?}");
+    let p = &r.value[0];
+    assert_eq!(p.root.status, Status::VerifiedSingular, "{p:?}");
+    assert!(p.root.max_roots <= 2);
+    let e = &p.root.enclosure;
+    assert!(
+        e[0].lo() <= std::f64::consts::FRAC_PI_2 && std::f64::consts::FRAC_PI_2 <= e[0].hi(),
+        "{e:?}"
+    );
+    assert!(
+        e[1].lo() <= 0.0 && 0.0 <= e[1].hi() && e[2].lo() <= 3.0 && 3.0 <= e[2].hi(),
+        "{e:?}"
+    );
+}
+
+#[test]
+fn near_misses_are_proven_and_close_crossings_separated() {
+    use geocert::Status;
+    let s = sphere(2.0);
+    for gap in [1e-6, 1e-9, 1e-12] {
+        let miss = Line3 {
+            origin: [-3.0, 2.0 + gap, 0.0],
+            dir: [1.0, 0.0, 0.0],
+            range: [-10.0, 10.0],
+        };
+        let r = certified(&miss, &s);
+        assert!(r.complete && r.value.is_empty(), "gap {gap}: {r:?}");
+        let cross = Line3 {
+            origin: [-3.0, 2.0 - gap, 0.0],
+            dir: [1.0, 0.0, 0.0],
+            range: [-10.0, 10.0],
+        };
+        let r = certified(&cross, &s);
+        assert!(r.complete, "gap {gap}: {:?}", r.reason);
+        assert_eq!(r.value.len(), 2, "gap {gap}: {r:?}");
+        assert!(r.value.iter().all(|p| p.root.status == Status::Verified));
+        // Disjoint boxes around t = 3 ∓ √(4 − (2 − gap)²).
+        assert!(r.value[0].root.enclosure[2].hi() < r.value[1].root.enclosure[2].lo());
+    }
+}

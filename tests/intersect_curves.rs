@@ -118,3 +118,62 @@ fn crossing_space_lines_meet_once_and_skew_ones_never() {
     );
     assert!(none.is_empty(), "{none:?}");
 }
+
+#[test]
+fn certified_circle_ellipse_points_of_16_6() {
+    use geocert::ops::intersect::intersect_curves_2d;
+    use geocert::Status;
+    let circle = Ellipse2 { a: 2.0, b: 2.0 };
+    let ellipse = Ellipse2 { a: 3.0, b: 1.0 };
+    let r = intersect_curves_2d(
+        &circle,
+        &ellipse,
+        &samples(&circle, 20),
+        &samples(&ellipse, 20),
+        &Precision::default(),
+        &Default::default(),
+    )
+    .expect("valid");
+    assert!(r.complete, "{:?}", r.reason);
+    assert_eq!(r.status, Status::Verified);
+    assert_eq!(r.value.len(), 4, "{r:?}");
+    // x = ±√(27/8), y = ±√(5/8) (exact data): every point box holds one of them.
+    let prec = 200;
+    let x = (rug::Float::with_val(prec, 27) / 8u32).sqrt();
+    let y = (rug::Float::with_val(prec, 5) / 8u32).sqrt();
+    for p in &r.value {
+        let b = &p.point_box;
+        let sx = if p.point[0] > 0.0 {
+            x.clone()
+        } else {
+            -x.clone()
+        };
+        let sy = if p.point[1] > 0.0 {
+            y.clone()
+        } else {
+            -y.clone()
+        };
+        assert!(
+            b[0].lo() <= sx && sx <= b[0].hi() && b[1].lo() <= sy && sy <= b[1].hi(),
+            "{b:?}"
+        );
+    }
+    // Tangent circle r = 1: two touching points, each verified_singular around (0, ±1).
+    let small = Ellipse2 { a: 1.0, b: 1.0 };
+    let r = intersect_curves_2d(
+        &small,
+        &ellipse,
+        &samples(&small, 20),
+        &samples(&ellipse, 20),
+        &Precision::default(),
+        &Default::default(),
+    )
+    .expect("valid");
+    assert_eq!(r.value.len(), 2, "{r:?}");
+    for p in &r.value {
+        assert_eq!(p.root.status, Status::VerifiedSingular, "{p:?}");
+        let b = &p.point_box;
+        assert!(b[0].lo() <= 0.0 && 0.0 <= b[0].hi());
+        assert!((b[1].lo() <= 1.0 && 1.0 <= b[1].hi()) || (b[1].lo() <= -1.0 && -1.0 <= b[1].hi()));
+    }
+}

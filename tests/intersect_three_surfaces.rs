@@ -91,3 +91,43 @@ fn spheres_too_far_apart_have_no_common_point() {
     let pts = intersect_three_surfaces_f64((&a, &b, &c), [&na, &nb, &nc], &Precision::default());
     assert!(pts.is_empty(), "{pts:?}");
 }
+
+#[test]
+fn certified_three_spheres() {
+    use geocert::ops::intersect::intersect_three_surfaces;
+    use geocert::Status;
+    let a = Sphere {
+        c: [0.0, 0.0, 0.0],
+        r: 1.0,
+    };
+    let b = Sphere {
+        c: [1.0, 0.0, 0.0],
+        r: 1.0,
+    };
+    let c = Sphere {
+        c: [0.0, 1.0, 0.0],
+        r: 1.0,
+    };
+    let (na, nb, nc) = (nodes(&a, 16), nodes(&b, 16), nodes(&c, 16));
+    let r = intersect_three_surfaces(
+        (&a, &b, &c),
+        [&na, &nb, &nc],
+        &Precision::default(),
+        &Default::default(),
+    )
+    .expect("valid");
+    assert_eq!(r.value.len(), 2, "{r:?}");
+    let z = rug::Float::with_val(200, 0.5f64).sqrt();
+    for p in &r.value {
+        assert_eq!(p.root.status, Status::Verified);
+        let b = &p.point_box;
+        assert!(b[0].lo() <= 0.5 && 0.5 <= b[0].hi() && b[1].lo() <= 0.5 && 0.5 <= b[1].hi());
+        let sz = if p.point[2] > 0.0 {
+            z.clone()
+        } else {
+            -z.clone()
+        };
+        assert!(b[2].lo() <= sz && sz <= b[2].hi(), "{b:?}");
+    }
+    assert!(r.complete, "{:?}", r.reason);
+}

@@ -181,3 +181,50 @@ fn projection_along_a_direction_onto_a_sphere() {
     );
     assert!(miss.is_empty());
 }
+
+#[test]
+fn certified_torus_feet_contain_the_closed_form_parameters() {
+    use geocert::ops::project::project_point_on_surface;
+    use geocert::Status;
+    let torus = Torus {
+        major: 3.0,
+        minor: 1.0,
+        v_range: [0.0, TAU],
+    };
+    let r = project_point_on_surface(
+        &torus,
+        &[1.0, 2.0, 3.0],
+        &nodes(&torus, 16),
+        &Precision::default(),
+        &Default::default(),
+    )
+    .expect("valid");
+    assert!(r.complete, "{:?}", r.reason);
+    assert_eq!(r.status, Status::Verified);
+    assert_eq!(r.value.len(), 4, "{r:?}");
+    // u = φ or φ + π with φ = atan2(2, 1); on the near tube circle v = atan2(3, √5 − 3)
+    // (towards p) or that + π; on the far one v = atan2(3, −√5 − 3) (ρ measured along
+    // −(cos φ, sin φ)), or that + π.
+    let prec = 200;
+    let f = |x: f64| rug::Float::with_val(prec, x);
+    let tau = f(TAU);
+    let wrap = |x: rug::Float| if x < 0 { x + &tau } else { x };
+    let phi = f(2.0).atan2(&f(1.0));
+    let s5 = f(5.0).sqrt();
+    let near_v = f(3.0).atan2(&(s5.clone() - 3u32));
+    let far_v = f(3.0).atan2(&(-s5 - 3u32));
+    let pi_exact = rug::Float::with_val(prec, rug::float::Constant::Pi);
+    let expected = [
+        (phi.clone(), wrap(near_v.clone())),
+        (phi.clone(), wrap(near_v.clone() + &pi_exact)),
+        (phi.clone() + &pi_exact, wrap(far_v.clone())),
+        (phi.clone() + &pi_exact, wrap(far_v.clone() + &pi_exact)),
+    ];
+    for (u, v) in expected {
+        let hit = r.value.iter().filter(|p| {
+            let e = &p.root.enclosure;
+            e[0].lo() <= u && u <= e[0].hi() && e[1].lo() <= v && v <= e[1].hi()
+        });
+        assert_eq!(hit.count(), 1, "({u}, {v}) not in exactly one box: {r:?}");
+    }
+}

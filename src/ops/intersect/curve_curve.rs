@@ -234,3 +234,37 @@ impl<A: Curve<3>, B: Curve<3>> System for ClosestApproachSystem<'_, A, B> {
         closest_approach_equations(self.a, self.b, &x).0.to_vec()
     }
 }
+
+/// All intersection points of two plane curves (§6.4), certified: roots of (6.5) in
+/// verified boxes, tangencies `verified_singular`, `complete` when the subdivision of
+/// the `(t₁, t₂)` domain finished.
+pub fn intersect_curves_2d<A: Curve<2>, B: Curve<2>>(
+    a: &A,
+    b: &B,
+    a_samples: &[(f64, f64)],
+    b_samples: &[(f64, f64)],
+    precision: &Precision,
+    opts: &crate::ops::certified::Options,
+) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<2>>>, crate::GeomError> {
+    use crate::ops::certified::{
+        certify_roots, curve_point, curve_unknowns, CertifiedPoint, Unknowns,
+    };
+    let guesses: Vec<Vec<f64>> = intersect_curves_f64(a, b, a_samples, b_samples, precision)
+        .iter()
+        .map(|p| p.params.to_vec())
+        .collect();
+    let unknowns = Unknowns::concat(&[curve_unknowns(a), curve_unknowns(b)]);
+    let roots = certify_roots(&CurveCurve2System { a, b }, &unknowns, &guesses, opts)?;
+    Ok(roots.map(|rs| {
+        rs.into_iter()
+            .map(|root| {
+                let (point, point_box) = curve_point(a, root.params[0], &root.enclosure[0]);
+                CertifiedPoint {
+                    root,
+                    point,
+                    point_box,
+                }
+            })
+            .collect()
+    }))
+}

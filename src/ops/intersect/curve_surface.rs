@@ -292,3 +292,53 @@ impl<S: Surface, C: Curve<3>> System for CurveSurfaceSystem<'_, S, C> {
             .to_vec()
     }
 }
+
+/// All intersection points of `curve` and `surface` (§5.2), certified: transversal
+/// points in verified boxes of (5.2), tangential ones `verified_singular` (at most two
+/// roots, a double root of a perturbed input), `complete` when the subdivision of the
+/// `(u, v, t)` domain finished. Near-misses are proven by exclusion.
+pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    curve_samples: &[(f64, f64)],
+    surface_nodes: &[[f64; 4]],
+    turn: f64,
+    precision: &Precision,
+    opts: &crate::ops::certified::Options,
+) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
+    use crate::ops::certified::{
+        certify_roots, curve_point, curve_unknowns, surface_unknowns, CertifiedPoint, Unknowns,
+    };
+    let guesses: Vec<Vec<f64>> = intersect_curve_surface_f64(
+        surface,
+        curve,
+        curve_samples,
+        surface_nodes,
+        turn,
+        precision,
+    )
+    .iter()
+    .map(|p| vec![p.surface_params[0], p.surface_params[1], p.t])
+    .collect();
+    let unknowns = Unknowns::concat(&[surface_unknowns(surface), curve_unknowns(curve)]);
+    let sys = CurveSurfaceSystem { surface, curve };
+    let roots = certify_roots(&sys, &unknowns, &guesses, opts)?;
+    Ok(roots
+        .map(|rs| {
+            rs.into_iter()
+                .map(|root| {
+                    let (point, point_box) = curve_point(curve, root.params[2], &root.enclosure[2]);
+                    CertifiedPoint {
+                        root,
+                        point,
+                        point_box,
+                    }
+                })
+                .collect::<Vec<_>>()
+        })
+        .map(|mut ps| {
+            // Ordered along the curve, like the float path.
+            ps.sort_by(|a, b| a.root.params[2].total_cmp(&b.root.params[2]));
+            ps
+        }))
+}

@@ -294,3 +294,41 @@ impl<R: Surface, S: Surface, Q: Surface> System for ThreeSurfaceSystem<'_, R, S,
             .to_vec()
     }
 }
+
+/// All common points of three surfaces (§7.2), certified: roots of (7.3) in verified
+/// boxes, `complete` when the subdivision of the six-dimensional domain finished.
+pub fn intersect_three_surfaces<R: Surface, S: Surface, Q: Surface>(
+    surfaces: (&R, &S, &Q),
+    nodes: [&[[f64; 4]]; 3],
+    precision: &Precision,
+    opts: &crate::ops::certified::Options,
+) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
+    use crate::ops::certified::{
+        certify_roots, surface_point, surface_unknowns, CertifiedPoint, Unknowns,
+    };
+    let (r, s, q) = surfaces;
+    let guesses: Vec<Vec<f64>> = intersect_three_surfaces_f64(surfaces, nodes, precision)
+        .iter()
+        .map(|p| p.params.concat())
+        .collect();
+    let unknowns = Unknowns::concat(&[
+        surface_unknowns(r),
+        surface_unknowns(s),
+        surface_unknowns(q),
+    ]);
+    let roots = certify_roots(&ThreeSurfaceSystem { r, s, q }, &unknowns, &guesses, opts)?;
+    Ok(roots.map(|rs| {
+        rs.into_iter()
+            .map(|root| {
+                let uv = [root.params[4], root.params[5]];
+                let (point, point_box) =
+                    surface_point(q, uv, &root.enclosure[4], &root.enclosure[5]);
+                CertifiedPoint {
+                    root,
+                    point,
+                    point_box,
+                }
+            })
+            .collect()
+    }))
+}

@@ -10,5 +10,6 @@ pub use curve::{
 };
 pub use direction::{project_along_direction_f64, Ray};
 pub use surface::{
-    project_point_on_surface_f64, surface_foot_equations, IsoCurve, SurfaceFeet, SurfaceFoot,
+    project_point_on_surface, project_point_on_surface_f64, surface_foot_equations, IsoCurve,
+    SurfaceFeet, SurfaceFoot,
 };

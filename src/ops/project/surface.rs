@@ -295,3 +295,37 @@ impl<S: Surface> System for SurfaceFootSystem<'_, S> {
             .to_vec()
     }
 }
+
+/// All feet from `p` onto `surface` (§3.4), certified like
+/// [`super::curve::project_point_on_curve`]: roots of (3.9) in verified boxes,
+/// `complete` when the subdivision covered the domain.
+pub fn project_point_on_surface<S: Surface>(
+    surface: &S,
+    p: &[f64; 3],
+    nodes: &[[f64; 4]],
+    precision: &Precision,
+    opts: &crate::ops::certified::Options,
+) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
+    use crate::ops::certified::{certify_roots, surface_point, surface_unknowns, CertifiedPoint};
+    let guesses: Vec<Vec<f64>> =
+        match project_point_on_surface_f64(surface, p, nodes, precision, false) {
+            SurfaceFeet::Finite(f) => f.iter().map(|x| x.params.to_vec()).collect(),
+            SurfaceFeet::Infinite => Vec::new(),
+        };
+    let sys = SurfaceFootSystem { surface, point: *p };
+    let roots = certify_roots(&sys, &surface_unknowns(surface), &guesses, opts)?;
+    Ok(roots.map(|rs| {
+        rs.into_iter()
+            .map(|root| {
+                let uv = [root.params[0], root.params[1]];
+                let (point, point_box) =
+                    surface_point(surface, uv, &root.enclosure[0], &root.enclosure[1]);
+                CertifiedPoint {
+                    root,
+                    point,
+                    point_box,
+                }
+            })
+            .collect()
+    }))
+}
