@@ -190,7 +190,7 @@ fn shifted_inside(a: &[Interval], b: &[Interval], unknowns: &Unknowns) -> bool {
     // Each coordinate independently: the shift sets are tiny (≤ 3 per coordinate).
     (0..n).all(|i| {
         shifts[i].iter().any(|&s| {
-            let shifted = a[i].clone() + Interval::point(s);
+            let shifted = a[i] + Interval::point(s);
             !shifted.is_empty() && shifted.is_subset(&b[i])
         })
     })
