@@ -95,7 +95,7 @@ fn exit_status_says_whether_all_claims_hold() {
     };
     let good = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1]}]}});
     let bad = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1.5]}]}});
-    assert_eq!(run(&[good.clone()]), Some(0));
+    assert_eq!(run(std::slice::from_ref(&good)), Some(0));
     assert_eq!(run(&[good.clone(), bad]), Some(3));
     assert_eq!(run(&[good, json!({"op": "intersect"})]), Some(1));
 }

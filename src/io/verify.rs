@@ -140,7 +140,9 @@ struct ReadClaim {
 fn read_claim(value: serde_json::Value, fallback: Option<Double>) -> Result<ReadClaim, GeomError> {
     let claim: Claim = deserialize_at(value, "claim")?;
     let tolerance = claim.tolerance.or(fallback).map(|d| d.0).unwrap_or(0.0);
-    if !(tolerance >= 0.0) {
+    // NaN is not a tolerance either.
+    let valid = tolerance >= 0.0;
+    if !valid {
         return Err(GeomError::InvalidValue {
             field: "claim.tolerance".into(),
             reason: format!("a tolerance must be ≥ 0, found {tolerance}"),
