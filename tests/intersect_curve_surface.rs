@@ -249,3 +249,79 @@ fn near_misses_are_proven_and_close_crossings_separated() {
         assert!(r.value[0].root.enclosure[2].hi() < r.value[1].root.enclosure[2].lo());
     }
 }
+
+mod properties {
+    use super::*;
+    use geocert::Status;
+    use proptest::prelude::*;
+
+    fn dyadic() -> impl Strategy<Value = f64> {
+        (-4096i64..4096).prop_map(|m| m as f64 / 1024.0)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(24))]
+
+        /// Lines parallel to x at height (y, z) against the sphere of radius 2: every
+        /// certified box holds a true root t = 3 ± √(4 − y² − z²) (300-bit), a complete
+        /// answer has exactly the true count, and a verified box never holds a tangency.
+        #[test]
+        fn certified_boxes_hold_the_true_roots_and_complete_counts_are_right(y in dyadic(), z in dyadic()) {
+            let line = Line3 { origin: [-3.0, y, z], dir: [1.0, 0.0, 0.0], range: [-10.0, 10.0] };
+            let r = certified(&line, &sphere(2.0));
+            let prec = 300;
+            let d2 = rug::Float::with_val(prec, y).square() + rug::Float::with_val(prec, z).square();
+            let disc = rug::Float::with_val(prec, 4) - d2;
+            let truths: Vec<rug::Float> = if disc > 0 {
+                let h = disc.clone().sqrt();
+                vec![rug::Float::with_val(prec, 3) - &h, rug::Float::with_val(prec, 3) + &h]
+            } else if disc == 0 {
+                vec![rug::Float::with_val(prec, 3)]
+            } else {
+                vec![]
+            };
+            for p in &r.value {
+                if p.root.status == Status::Undecided { continue; }
+                let held = truths.iter().filter(|t| contains(&p.root.enclosure[2], t)).count();
+                prop_assert!(held >= 1, "box {:?} holds no root", p.root.enclosure);
+                if p.root.status == Status::Verified {
+                    prop_assert!(disc != 0, "a tangency reported as a simple root");
+                }
+            }
+            if r.complete {
+                let multiplicity: u32 = r.value.iter().map(|p| if p.root.status == Status::Verified { 1 } else { 2 }).sum();
+                prop_assert_eq!(multiplicity as usize, if disc == 0 { 2 } else { truths.len() }, "{:?}", r);
+            }
+        }
+    }
+
+    #[test]
+    fn exact_tangencies_are_singular_and_pole_tangencies_never_wrongly_decided() {
+        for y in [2.0, -2.0] {
+            let line = Line3 {
+                origin: [-3.0, y, 0.0],
+                dir: [1.0, 0.0, 0.0],
+                range: [-10.0, 10.0],
+            };
+            let r = certified(&line, &sphere(2.0));
+            assert_eq!(r.value.len(), 1, "{y}: {r:?}");
+            assert_eq!(r.value[0].root.status, Status::VerifiedSingular);
+            assert!(contains(
+                &r.value[0].root.enclosure[2],
+                &rug::Float::with_val(53, 3.0)
+            ));
+        }
+        // Touching at a pole, v = π/2 exactly: every u is a solution of (5.2), a
+        // continuum no isolating box can hold. The answer may not be decided, but it
+        // must not claim a complete absence of points.
+        for z in [2.0, -2.0] {
+            let line = Line3 {
+                origin: [-3.0, 0.0, z],
+                dir: [1.0, 0.0, 0.0],
+                range: [-10.0, 10.0],
+            };
+            let r = certified(&line, &sphere(2.0));
+            assert!(!(r.complete && r.value.is_empty()), "{z}: {r:?}");
+        }
+    }
+}

@@ -26,6 +26,9 @@ impl Surface for Sphere {
     fn is_closed(&self) -> [bool; 2] {
         [true, false]
     }
+    fn domain_rounded(&self) -> [bool; 2] {
+        [true, true]
+    }
     fn jet<T: geocert::num::Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let base = Torus {
             major: 0.0,

@@ -27,6 +27,13 @@ pub trait Curve<const D: usize> {
         false
     }
 
+    /// The domain's bounds are the nearest doubles to irrational values (`2π`, an arc's
+    /// angle), not the exact ends: the certifier then covers them outward by one ulp,
+    /// so that no solution between the double and the exact end is missed.
+    fn domain_rounded(&self) -> bool {
+        false
+    }
+
     /// The value and derivatives up to `order` (at most 3) at `t`:
     /// `jet[k] = dᵏc/dtᵏ`, so `jet.len() == order + 1`.
     ///

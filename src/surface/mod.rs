@@ -18,6 +18,14 @@ pub trait Surface {
         [false, false]
     }
 
+    /// Per direction: the domain's bounds are the nearest doubles to irrational values
+    /// (`2π`, `±π/2`, the `v`-range of a torus with `r > R`), not the exact ends; the
+    /// certifier then covers them outward by one ulp (a sphere's pole is at the exact
+    /// `π/2`, beyond the double `1.5707963267948966`).
+    fn domain_rounded(&self) -> [bool; 2] {
+        [false, false]
+    }
+
     /// Value and partial derivatives up to `order` (0, 1 or 2) at `(u, v)`, in the
     /// order `[s, s_u, s_v, s_uu, s_uv, s_vv]` truncated to 1, 3 or 6 entries (§1.3).
     ///

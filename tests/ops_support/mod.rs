@@ -21,6 +21,9 @@ impl Curve<2> for Ellipse2 {
     fn is_closed(&self) -> bool {
         true
     }
+    fn domain_rounded(&self) -> bool {
+        true // [0, 2π]
+    }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 2]> {
         let (c, s) = (t.cos(), t.sin());
         let (a, b) = (t.lift(self.a), t.lift(self.b));
@@ -51,6 +54,9 @@ impl Surface for Torus {
     }
     fn is_closed(&self) -> [bool; 2] {
         [true, self.v_range == [0.0, TAU]]
+    }
+    fn domain_rounded(&self) -> [bool; 2] {
+        [true, true] // 2π, ±π/2
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let (cu, su, cv, sv) = (u.cos(), u.sin(), v.cos(), v.sin());

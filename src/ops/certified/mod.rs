@@ -16,6 +16,7 @@
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::certify::{self, Root, System};
 use crate::error::GeomError;
+use crate::num::round::{next_down, next_up};
 use crate::num::Interval;
 
 pub use crate::certify::Options;
@@ -25,6 +26,39 @@ pub use crate::certify::Options;
 pub struct Unknowns {
     pub domain: Vec<[f64; 2]>,
     pub periodic: Vec<bool>,
+    /// The bounds are roundings of irrational ends (`Curve::domain_rounded`): covered
+    /// outward by one ulp.
+    pub rounded: Vec<bool>,
+}
+
+impl Unknowns {
+    /// The box the certifier searches: the domain, with rounded bounds moved outward
+    /// by one ulp so that it contains the exact domain.
+    pub fn search_box(&self) -> Vec<[f64; 2]> {
+        self.domain
+            .iter()
+            .zip(&self.rounded)
+            .map(|(&[lo, hi], &r)| {
+                if r {
+                    [next_down(lo), next_up(hi)]
+                } else {
+                    [lo, hi]
+                }
+            })
+            .collect()
+    }
+
+    /// An enclosure of the period of coordinate `i` (the exact domain's length).
+    fn period(&self, i: usize) -> Interval {
+        let [lo, hi] = self.domain[i];
+        let exact = Interval::point(hi) - Interval::point(lo);
+        if self.rounded[i] {
+            let [a, b] = self.search_box()[i];
+            exact.hull(&(Interval::point(b) - Interval::point(a)))
+        } else {
+            exact
+        }
+    }
 }
 
 /// One certified solution: a root of the operation's system.
@@ -81,14 +115,14 @@ pub fn certify_roots<S: System>(
     guesses: &[Vec<f64>],
     opts: &Options,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
-    let solved = certify::solve(sys, &unknowns.domain, opts)?;
+    let search = unknowns.search_box();
+    let solved = certify::solve(sys, &search, opts)?;
     let mut roots: Vec<CertifiedRoot> = Vec::new();
     for r in &solved.value.roots {
         push_unique(&mut roots, CertifiedRoot::from_root(r, false), unknowns);
     }
     for r in &solved.value.boundary_roots {
-        let on_seam_only = unknowns
-            .domain
+        let on_seam_only = search
             .iter()
             .zip(&unknowns.periodic)
             .zip(&r.enclosure)
@@ -176,21 +210,17 @@ fn push_unique(roots: &mut Vec<CertifiedRoot>, root: CertifiedRoot, unknowns: &U
 /// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
 /// −P), lies inside `b`.
 fn shifted_inside(a: &[Interval], b: &[Interval], unknowns: &Unknowns) -> bool {
-    let n = a.len();
-    let shifts: Vec<Vec<f64>> = (0..n)
-        .map(|i| {
-            let [lo, hi] = unknowns.domain[i];
-            if unknowns.periodic[i] {
-                vec![0.0, hi - lo, lo - hi]
-            } else {
-                vec![0.0]
-            }
-        })
-        .collect();
-    // Each coordinate independently: the shift sets are tiny (≤ 3 per coordinate).
-    (0..n).all(|i| {
-        shifts[i].iter().any(|&s| {
-            let shifted = a[i] + Interval::point(s);
+    // Each coordinate independently: the shifts are 0, +P, −P (P an enclosure of the
+    // period), so every shifted copy is an enclosure of the shifted set.
+    (0..a.len()).all(|i| {
+        let shifts = if unknowns.periodic[i] {
+            let p = unknowns.period(i);
+            vec![Interval::point(0.0), p, -p]
+        } else {
+            vec![Interval::point(0.0)]
+        };
+        shifts.into_iter().any(|s| {
+            let shifted = a[i] + s;
             !shifted.is_empty() && shifted.is_subset(&b[i])
         })
     })
@@ -219,6 +249,7 @@ pub fn curve_unknowns<C: crate::curve::Curve<D>, const D: usize>(c: &C) -> Unkno
     Unknowns {
         domain: vec![[lo, hi]],
         periodic: vec![c.is_closed()],
+        rounded: vec![c.domain_rounded()],
     }
 }
 
@@ -229,6 +260,7 @@ pub fn surface_unknowns<S: crate::surface::Surface>(s: &S) -> Unknowns {
     Unknowns {
         domain: vec![u, v],
         periodic: closed.to_vec(),
+        rounded: s.domain_rounded().to_vec(),
     }
 }
 
@@ -238,6 +270,7 @@ impl Unknowns {
         Unknowns {
             domain: parts.iter().flat_map(|p| p.domain.clone()).collect(),
             periodic: parts.iter().flat_map(|p| p.periodic.clone()).collect(),
+            rounded: parts.iter().flat_map(|p| p.rounded.clone()).collect(),
         }
     }
 }
