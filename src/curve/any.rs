@@ -65,6 +65,9 @@ impl Curve<3> for AnyCurve3 {
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         forward!(AnyCurve3, self, c => c.jet(t, order))
     }
+    fn tangent_breaks(&self) -> Vec<(f64, f64)> {
+        forward!(AnyCurve3, self, c => c.tangent_breaks())
+    }
     fn step_hint(&self, t: f64) -> StepHint {
         forward!(AnyCurve3, self, c => c.step_hint(t))
     }
@@ -82,6 +85,9 @@ impl Curve<2> for AnyCurve2 {
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 2]> {
         forward!(AnyCurve2, self, c => c.jet(t, order))
+    }
+    fn tangent_breaks(&self) -> Vec<(f64, f64)> {
+        forward!(AnyCurve2, self, c => c.tangent_breaks())
     }
     fn step_hint(&self, t: f64) -> StepHint {
         forward!(AnyCurve2, self, c => c.step_hint(t))

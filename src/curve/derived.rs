@@ -12,7 +12,8 @@ use super::domain::Domain;
 use super::{Curve, StepHint};
 use crate::error::{require_finite, GeomError};
 use crate::num::Real;
-use rug::Rational;
+use rug::float::Round;
+use rug::{Float, Rational};
 
 /// A curve under the affine change of parameter `t = t₁ + (τ − τ₀)(n₁ − n₀)/(d₁ − d₀)`.
 #[derive(Debug, Clone, PartialEq)]
@@ -29,6 +30,16 @@ pub struct Reparametrised<C> {
 /// The exact rational value of a double (finite by the callers' checks).
 fn q(x: f64) -> Rational {
     Rational::from_f64(x).unwrap_or_default()
+}
+
+/// The greatest double `≤ x`.
+fn round_down(x: &Rational) -> f64 {
+    Float::with_val_round(53, x, Round::Down).0.to_f64()
+}
+
+/// The least double `≥ x`.
+fn round_up(x: &Rational) -> f64 {
+    Float::with_val_round(53, x, Round::Up).0.to_f64()
 }
 
 impl<C> Reparametrised<C> {
@@ -196,6 +207,58 @@ impl<const D: usize, C: Curve<D>> Curve<D> for Reparametrised<C> {
             factor = factor * &s;
         }
         jet
+    }
+    /// The base curve's breaks mapped exactly (in rationals) through `τ = τ₀ + (t − t₁)/s`
+    /// and rounded outward to doubles; for a periodic base every period that meets the
+    /// domain contributes.
+    fn tangent_breaks(&self) -> Vec<(f64, f64)> {
+        let base = self.base.tangent_breaks();
+        if base.is_empty() {
+            return base;
+        }
+        let s = (q(self.num.1) - q(self.num.0)) / (q(self.den.1) - q(self.den.0));
+        let to_tau = |t: &Rational| q(self.tau0) + (t.clone() - q(self.t1)) / &s;
+        let (lo, hi) = self.domain.pair();
+        let (qlo, qhi) = (q(lo), q(hi));
+        let (blo, bhi) = self.base.domain();
+        let shifts: Vec<Rational> = if self.base.is_periodic() {
+            // Base parameters reached: t(lo) … t(hi); the periods k that bring a break there.
+            let period = q(bhi) - q(blo);
+            let ends = [self.base_parameter(lo), self.base_parameter(hi)];
+            let (a, b) = (ends[0].min(ends[1]), ends[0].max(ends[1]));
+            let p = bhi - blo;
+            let (k0, k1) = (((a - bhi) / p).floor() - 1.0, ((b - blo) / p).ceil() + 1.0);
+            let mut k = k0;
+            let mut v = Vec::new();
+            while k <= k1 && v.len() < 10_000 {
+                v.push(period.clone() * Rational::from_f64(k).unwrap_or_default());
+                k += 1.0;
+            }
+            v
+        } else {
+            vec![Rational::new()]
+        };
+        let mut out = Vec::new();
+        for (b_lo, b_hi) in base {
+            for shift in &shifts {
+                let ends = [b_lo, b_hi].map(|b| to_tau(&(q(b) + shift)));
+                let (e0, e1) = if ends[0] <= ends[1] {
+                    (ends[0].clone(), ends[1].clone())
+                } else {
+                    (ends[1].clone(), ends[0].clone())
+                };
+                let inside = if self.is_periodic() {
+                    qlo <= e1 && e0 < qhi
+                } else {
+                    qlo < e1 && e0 < qhi
+                };
+                if inside {
+                    out.push((round_down(&e0), round_up(&e1)));
+                }
+            }
+        }
+        out.sort_by(|a, b| a.0.total_cmp(&b.0));
+        out
     }
     fn step_hint(&self, tau: f64) -> StepHint {
         let s = ((self.num.1 - self.num.0) / (self.den.1 - self.den.0)).abs();

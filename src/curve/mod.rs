@@ -85,6 +85,15 @@ pub trait Curve<const D: usize> {
         diffgeo::curvature(&jet[1], &jet[2])
     }
 
+    /// The parameters where `c'` may jump (a polyline's inner vertices, the knots of
+    /// multiplicity ≥ p of a B-spline; for a periodic curve also its seam), ascending,
+    /// each as an interval of doubles `(lo, hi)` containing it (`lo = hi` when the
+    /// parameter is a double). The tangent turns there by an angle that no derivative
+    /// bound sees, so proven steps (OPERATIONS.md §2) stop at them. Default: none.
+    fn tangent_breaks(&self) -> Vec<(f64, f64)> {
+        Vec::new()
+    }
+
     /// How the walk of OPERATIONS.md §2.1 chooses its step at `t` (see [`StepHint`]).
     /// The default is the general rule (2.1) with no extra clamp.
     fn step_hint(&self, _t: f64) -> StepHint {

@@ -225,6 +225,30 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
             eval(t)
         }
     }
+    /// The knots of multiplicity ≥ p inside the domain (C⁰ there); for a periodic
+    /// curve those of the closed domain, seam included.
+    fn tangent_breaks(&self) -> Vec<(f64, f64)> {
+        let (u, p) = (self.knots.knots(), self.degree());
+        let (lo, hi) = self.domain.pair();
+        let mut out = Vec::new();
+        let mut i = 0;
+        while i < u.len() {
+            let mut j = i;
+            while j < u.len() && u[j] == u[i] {
+                j += 1;
+            }
+            let inside = if self.periodic {
+                lo <= u[i] && u[i] < hi
+            } else {
+                lo < u[i] && u[i] < hi
+            };
+            if inside && j - i >= p {
+                out.push((u[i], u[i]));
+            }
+            i = j;
+        }
+        out
+    }
     /// (2.1) with the B-spline clamp of §2.1: at most ½ of the current knot span.
     fn step_hint(&self, t: f64) -> StepHint {
         let (a, b) = self.knots.span_interval(t);

@@ -86,6 +86,11 @@ impl<const D: usize> Curve<D> for Polyline<D> {
             jet
         })
     }
+    /// The inner vertices.
+    fn tangent_breaks(&self) -> Vec<(f64, f64)> {
+        let n = self.params.len();
+        self.params[1..n - 1].iter().map(|&t| (t, t)).collect()
+    }
     /// (2.1) clamped to ½ of the current segment's parameter length (as knot spans).
     fn step_hint(&self, t: f64) -> StepHint {
         let i = self.piece_of(t);
