@@ -107,10 +107,10 @@ impl Frame {
         // w = r|a|² − (r·a)a, orthogonal to a.
         let w = add_scaled(&scale(&a_sq, &r), &-dot(&r, &a), &a);
         let w_len = norm_sq(&w).sqrt();
-        let inv_w = like.one_like() / &w_len;
-        let x = scale(&inv_w, &w);
-        let y = scale(&(inv_w / &a_len), &cross(&a, &w));
-        let z = scale(&(like.one_like() / &a_len), &a);
+        // Divisions rather than reciprocals: exact whenever the quotient is a double.
+        let x = w.clone().map(|c| c / &w_len);
+        let y = cross(&a, &w).map(|c| c / (a_len.clone() * &w_len));
+        let z = a.map(|c| c / &a_len);
         [x, y, z]
     }
 
