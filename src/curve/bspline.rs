@@ -38,14 +38,17 @@ impl KnotVector {
                 reason: "the degree must be at least 1".into(),
             });
         }
-        if n_points < degree + 1 {
+        if n_points <= degree {
             return Err(GeomError::CountMismatch {
                 field: "points".into(),
-                expected: format!("at least degree + 1 = {} control points", degree + 1),
+                expected: format!(
+                    "at least degree + 1 = {} control points",
+                    degree.saturating_add(1)
+                ),
                 found: format!("{n_points}"),
             });
         }
-        let expected = n_points + degree + 1;
+        let expected = n_points + degree + 1; // no overflow: degree < n_points
         if knots.len() != expected {
             return Err(GeomError::CountMismatch {
                 field: "knots".into(),
@@ -85,7 +88,7 @@ impl KnotVector {
                 });
             }
         }
-        if !(lo < hi) {
+        if lo >= hi {
             return Err(GeomError::EmptyDomain {
                 field: "knots".into(),
                 lo: format!("{lo}"),

@@ -145,6 +145,7 @@ impl<C> Reparametrised<C> {
     /// The reparametrised curve `c(t_min + (τ − τ_min)(t_max − t_min)/(τ_max − τ_min))`,
     /// `τ ∈ [τ_min, τ_max]` (§1.5). Errors: `non_finite`, `empty_domain` (`domain`),
     /// `unsupported` (`domain`) for an unbounded base domain.
+    #[allow(clippy::self_named_constructors)] // the §1.5 name of the derived curve
     pub fn reparametrised<const D: usize>(
         base: C,
         tau_min: f64,

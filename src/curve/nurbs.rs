@@ -78,7 +78,7 @@ impl<const D: usize> NurbsCurve<D> {
         weights: Option<Vec<f64>>,
     ) -> Result<Self, GeomError> {
         check_net(&points, weights.as_deref())?;
-        if degree == 0 || points.len() < degree + 1 {
+        if degree == 0 || points.len() <= degree {
             // Let the knot validation name the problem.
             KnotVector::new(vec![], degree, points.len())?;
         }

@@ -182,7 +182,8 @@ pub fn proven_curve_step<const D: usize, T: IntervalLike>(
     like: &T,
 ) -> Option<ProvenStep> {
     let (lo, hi) = curve.domain();
-    if !(lo.is_finite() && hi.is_finite()) || !(t0 < hi) || !(delta_alpha > 0.0) {
+    let usable = lo.is_finite() && hi.is_finite() && t0 < hi && delta_alpha > 0.0;
+    if !usable {
         return None;
     }
     let options = WalkOptions {
@@ -199,7 +200,7 @@ pub fn proven_curve_step<const D: usize, T: IntervalLike>(
     let mut h = curve_step(curve, t0, &options).min(limit - t0);
     loop {
         let t1 = (t0 + h).min(limit);
-        if !(t1 > t0) {
+        if t1 <= t0 || t1.is_nan() {
             return None;
         }
         let (bound, regular) = turning_bound(curve, t0, t1, like);

@@ -31,7 +31,7 @@ impl Real for Interval {
     }
     /// Exact: the bounds are doubles, so the intersection needs no rounding.
     fn restrict_to(&self, lo: f64, hi: f64) -> Self {
-        if !(lo <= hi) {
+        if lo > hi || lo.is_nan() || hi.is_nan() {
             return Interval::EMPTY;
         }
         self.intersection(&Interval::from_bounds(lo, hi))

@@ -44,7 +44,7 @@ impl Real for MpfrInterval {
     }
     /// Exact at 53 bits and more (the bounds are doubles).
     fn restrict_to(&self, lo: f64, hi: f64) -> Self {
-        if !(lo <= hi) {
+        if lo > hi || lo.is_nan() || hi.is_nan() {
             return MpfrInterval::empty(self.prec());
         }
         self.intersection(&MpfrInterval::from_bounds(lo, hi, self.prec()))
