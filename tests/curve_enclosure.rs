@@ -124,3 +124,35 @@ fn periodic_enclosures_wrap_across_the_seam() {
     }
     assert_eq!(periodic, 3, "circle, ellipse and the periodic NURBS");
 }
+
+/// Unbounded or astronomically large parameters of a periodic curve terminate and
+/// enclose every point of the curve.
+#[test]
+fn huge_parameters_of_periodic_curves_enclose_the_whole_curve() {
+    let c = space_curves()
+        .into_iter()
+        .find(|(n, _)| *n == "periodic-nurbs")
+        .unwrap()
+        .1;
+    let (lo, hi) = c.domain();
+    for t in [
+        Interval::ENTIRE,
+        Interval::point(1e300),
+        Interval::from_bounds(-1e20, 1e20),
+    ] {
+        let enc = c.jet(&t, 2);
+        for k in 0..=10 {
+            let s = lo + (hi - lo) * k as f64 / 10.0;
+            let f = c.jet(&s, 2);
+            for d in 0..=2 {
+                for i in 0..3 {
+                    assert!(
+                        enc[d][i].contains_value(f[d][i]),
+                        "{t:?}: jet[{d}][{i}] at {s}"
+                    );
+                }
+            }
+        }
+    }
+    assert!(c.point(&1e300).iter().all(|x| x.is_finite()));
+}

@@ -2,9 +2,10 @@
 //! ([`AnyCurve2`]), so operations and the JSON layer can hold any curve; each
 //! implements [`Curve`] by forwarding to the primitive.
 
-use super::analytic::{Analytic, Analytic2, Line, Segment};
+use super::analytic::{Analytic, Analytic2};
 use super::bezier::Bezier;
 use super::derived::Reparametrised;
+use super::lines::{Line, Segment};
 use super::nurbs::NurbsCurve;
 use super::polyline::Polyline;
 use super::{Curve, StepHint};

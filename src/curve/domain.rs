@@ -126,16 +126,33 @@ pub fn periodic_jet<T: Real, const D: usize>(
     let period = t.lift(hi) - t.lift(lo);
     let shifted = |k: f64| t.clone() - t.lift(k) * &period;
     let ka = ((a - lo) / period_f).floor();
+    let kb = ((b - lo) / period_f).floor();
+    // Beyond 2⁵² periods (or an unbounded or NaN parameter) whole periods no longer
+    // count exactly in doubles: cover every residue by the whole domain (an enclosure
+    // for any parameter; a point then evaluates at a domain end).
+    let countable = |k: f64| k.abs() < 4.5e15;
+    if !(countable(ka) && countable(kb)) {
+        // [lo, hi] for intervals; `lo` for f64 (whose hull is its first operand).
+        return eval(&t.lift(lo).hull_with(&t.lift(hi)));
+    }
     if a == b {
-        // A point: one shift, clamped into the domain (f64) or intersected with it.
-        let s = shifted(ka).restrict_to(lo, hi);
+        // A point: one shift. Used when the shifted value lies in the domain (or, exactly
+        // computed, clamps into it: f64); an interval cut by the domain ends could miss
+        // the true residue when `ka` is off by one, so it goes to the pieces below.
+        let s = shifted(ka);
         let (sa, sb) = s.bounds();
-        if sa <= sb {
+        if lo <= sa && sb <= hi {
             return eval(&s);
         }
+        if sa == sb {
+            let r = s.restrict_to(lo, hi);
+            let (ra, rb) = r.bounds();
+            if ra <= rb {
+                return eval(&r);
+            }
+        }
     }
-    let kb = ((b - lo) / period_f).floor();
-    let (k_first, k_last) = if kb - ka > 4.0 || !(kb - ka).is_finite() {
+    let (k_first, k_last) = if kb - ka > 4.0 {
         (ka - 1.0, ka + 4.0)
     } else {
         (ka - 1.0, kb + 1.0)

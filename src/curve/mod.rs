@@ -7,8 +7,9 @@
 //! derivative over that interval.
 //!
 //! * [`frame`] — the local frame of analytic curves (CASES.md frame rule);
-//! * [`analytic`] — line, segment, circle, ellipse, hyperbola, parabola, helix, and
-//!   the 2D circle and ellipse; circular and elliptic arcs;
+//! * [`lines`] — line and segment (any dimension);
+//! * [`analytic`] — circle, ellipse, hyperbola, parabola, helix, and the 2D circle and
+//!   ellipse; circular and elliptic arcs;
 //! * [`polyline`], [`bezier`] (rational Bézier, conic arc), [`nurbs`] (B-spline and
 //!   NURBS curves over the basis of [`bspline`]);
 //! * [`conic2`] — the implicit conic of the plane;
@@ -25,12 +26,13 @@ pub mod derived;
 pub mod diffgeo;
 pub mod domain;
 pub mod frame;
+pub mod lines;
 pub mod nurbs;
 pub mod polyline;
 mod rational;
 pub mod vector;
 
-pub use analytic::{circular_arc, elliptic_arc, Analytic, Analytic2, Line, Segment, Shape};
+pub use analytic::{circular_arc, elliptic_arc, Analytic, Analytic2, Shape};
 pub use any::{AnyCurve2, AnyCurve3};
 pub use bezier::{conic_arc, Bezier};
 pub use conic2::{Conic2, ConicKind};
@@ -38,6 +40,7 @@ pub use derived::Reparametrised;
 pub use diffgeo::{PlaneCurve, SpaceCurve};
 pub use domain::Domain;
 pub use frame::Frame;
+pub use lines::{Line, Segment};
 pub use nurbs::NurbsCurve;
 pub use polyline::Polyline;
 

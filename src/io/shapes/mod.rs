@@ -9,6 +9,7 @@
 //! * [`curve`] — every curve type: [`parse_curve3`], [`parse_curve2`].
 
 pub mod curve;
+mod curve_fields;
 
 pub use curve::{curve3_from_json, parse_curve2, parse_curve3, Curve2Spec, Curve3Spec, PlaneShape};
 
