@@ -151,55 +151,64 @@ impl KnotVector {
     /// Terms of functions that vanish on the span are skipped (`0/0 := 0`); the others
     /// have denominators `≥ u_{s+1} − u_s > 0`.
     pub fn basis_derivatives<T: Real>(&self, s: usize, t: &T, order: usize) -> Vec<Vec<T>> {
+        let flat = self.basis_derivatives_flat(s, t, order);
+        flat.chunks(self.degree + 1).map(<[T]>::to_vec).collect()
+    }
+
+    /// [`KnotVector::basis_derivatives`] in one buffer: entry `k(p+1) + j − (s−p)`
+    /// (the evaluator's form: one allocation besides two scratch rows).
+    pub fn basis_derivatives_flat<T: Real>(&self, s: usize, t: &T, order: usize) -> Vec<T> {
         let p = self.degree;
         let u = |i: usize| t.lift(self.knots[i]);
-        // table[d][j − (s − d)] = N_{j,d}(t), j = s−d ..= s.
-        let mut table: Vec<Vec<T>> = vec![vec![t.one_like()]];
+        // Level d of (1.11), N_{j,d} for j = s−d ..= s, at offset d(d+1)/2 + j − (s−d).
+        let offset = |d: usize| d * (d + 1) / 2;
+        let mut table: Vec<T> = Vec::with_capacity(offset(p + 1));
+        table.push(t.one_like());
         for d in 1..=p {
-            let prev = &table[d - 1];
-            let get =
-                |j: usize| -> Option<&T> { (j + d > s && j <= s).then(|| &prev[j + d - 1 - s]) };
-            let level = (s - d..=s)
-                .map(|j| {
-                    let mut v = t.zero_like();
-                    if let Some(n0) = get(j) {
-                        v = v + (t.clone() - u(j)) / (u(j + d) - u(j)) * n0;
-                    }
-                    if let Some(n1) = get(j + 1) {
-                        v = v + (u(j + d + 1) - t.clone()) / (u(j + d + 1) - u(j + 1)) * n1;
-                    }
-                    v
-                })
-                .collect();
-            table.push(level);
+            let prev = offset(d - 1);
+            for j in s - d..=s {
+                let mut v = t.zero_like();
+                if j + d > s {
+                    // N_{j,d−1} lives on the span (j ≥ s−d+1).
+                    let n0 = &table[prev + j + d - 1 - s];
+                    v = v + (t.clone() - u(j)) / (u(j + d) - u(j)) * n0;
+                }
+                if j < s {
+                    let n1 = &table[prev + j + d - s];
+                    v = v + (u(j + d + 1) - t.clone()) / (u(j + d + 1) - u(j + 1)) * n1;
+                }
+                table.push(v);
+            }
         }
-        (0..=order)
-            .map(|k| {
-                if k > p {
-                    return vec![t.zero_like(); p + 1];
+        let mut out = Vec::with_capacity((order + 1) * (p + 1));
+        let (mut cur, mut next): (Vec<T>, Vec<T>) =
+            (Vec::with_capacity(p + 1), Vec::with_capacity(p + 1));
+        for k in 0..=order {
+            if k > p {
+                out.extend(std::iter::repeat_with(|| t.zero_like()).take(p + 1));
+                continue;
+            }
+            // (1.12) k times upward from level p − k.
+            cur.clear();
+            cur.extend_from_slice(&table[offset(p - k)..offset(p - k + 1)]);
+            for d in p - k + 1..=p {
+                next.clear();
+                let scale = t.lift(d as f64);
+                for j in s - d..=s {
+                    let mut v = t.zero_like();
+                    if j + d > s {
+                        v = v + cur[j + d - 1 - s].clone() / (u(j + d) - u(j));
+                    }
+                    if j < s {
+                        v = v - cur[j + d - s].clone() / (u(j + d + 1) - u(j + 1));
+                    }
+                    next.push(v * &scale);
                 }
-                let mut cur = table[p - k].clone();
-                for d in p - k + 1..=p {
-                    let get = |j: usize| -> Option<&T> {
-                        (j + d > s && j <= s).then(|| &cur[j + d - 1 - s])
-                    };
-                    let next: Vec<T> = (s - d..=s)
-                        .map(|j| {
-                            let mut v = t.zero_like();
-                            if let Some(a) = get(j) {
-                                v = v + a.clone() / (u(j + d) - u(j));
-                            }
-                            if let Some(b) = get(j + 1) {
-                                v = v - b.clone() / (u(j + d + 1) - u(j + 1));
-                            }
-                            v * t.lift(d as f64)
-                        })
-                        .collect();
-                    cur = next;
-                }
-                cur
-            })
-            .collect()
+                std::mem::swap(&mut cur, &mut next);
+            }
+            out.extend_from_slice(&cur);
+        }
+        out
     }
 
     /// de Boor's recursion [Y 2.9.5]–[Y 2.9.6] for the point of span `s`: `rows[j]` are

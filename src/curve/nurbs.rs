@@ -13,6 +13,7 @@
 use super::bezier::{check_net, finish_jet};
 use super::bspline::KnotVector;
 use super::domain::{periodic_jet, piecewise_jet, Domain};
+use super::rational::quotient_jet;
 use super::{Curve, StepHint};
 use crate::error::GeomError;
 use crate::num::Real;
@@ -131,26 +132,36 @@ impl<const D: usize> NurbsCurve<D> {
             .collect()
     }
 
-    /// The jet on span `s` from the basis derivatives (1.11)–(1.12).
+    /// The jet on span `s` from the basis derivatives (1.11)–(1.12): the homogeneous
+    /// sums `A⁽ᵏ⁾ = Σ N⁽ᵏ⁾ w P`, `W⁽ᵏ⁾ = Σ N⁽ᵏ⁾ w`, then the quotient rule.
     fn span_jet<T: Real>(&self, s: usize, t: &T, order: usize) -> Vec<[T; D]> {
-        let basis = self.knots.basis_derivatives(s, t, order);
-        let rows = self.rows(s, t);
-        let m = rows[0].len();
-        let jet: Vec<Vec<T>> = basis
-            .iter()
-            .map(|nk| {
-                (0..m)
-                    .map(|c| {
-                        let mut acc = t.zero_like();
-                        for (n, row) in nk.iter().zip(&rows) {
-                            acc = acc + n.clone() * &row[c];
-                        }
-                        acc
-                    })
-                    .collect()
-            })
-            .collect();
-        finish_jet(jet, self.weights.is_some())
+        let p = self.degree();
+        let basis = self.knots.basis_derivatives_flat(s, t, order);
+        let mut numerator: Vec<[T; D]> = vec![std::array::from_fn(|_| t.zero_like()); order + 1];
+        let mut weight: Vec<T> = vec![t.zero_like(); order + 1];
+        for (j, i) in (s - p..=s).enumerate() {
+            let point: [T; D] = std::array::from_fn(|c| t.lift(self.points[i][c]));
+            let w = self.weights.as_ref().map(|w| t.lift(w[i]));
+            for k in 0..=order {
+                let n = &basis[k * (p + 1) + j];
+                let nw = match &w {
+                    Some(w) => {
+                        let nw = n.clone() * w;
+                        weight[k] = weight[k].clone() + &nw;
+                        nw
+                    }
+                    None => n.clone(),
+                };
+                for (acc, x) in numerator[k].iter_mut().zip(&point) {
+                    *acc = acc.clone() + nw.clone() * x;
+                }
+            }
+        }
+        if self.weights.is_some() {
+            quotient_jet(&numerator, &weight)
+        } else {
+            numerator
+        }
     }
 
     /// The point by de Boor's recursion [Y 2.9.5]–[Y 2.9.6] (an alternative to the
