@@ -70,6 +70,18 @@ pub trait Real:
     fn one_like(&self) -> Self {
         self.lift(1.0)
     }
+
+    /// The convex hull of `self` and `other`, for evaluating a formula piecewise over
+    /// an interval parameter (a B-spline over the knot spans it straddles) and
+    /// joining the pieces. Enclosures: contains both operands (an empty operand gives
+    /// the other). `f64` (a point, which generic code that splits by [`Real::bounds`]
+    /// never needs to join): `self`.
+    fn hull_with(&self, other: &Self) -> Self;
+
+    /// `self ∩ [lo, hi]` (`lo` may be `−∞`, `hi` may be `+∞`), for restricting an
+    /// interval parameter to one piece of a piecewise formula. Enclosures: the
+    /// intersection, possibly empty. `f64`: `self` clamped into `[lo, hi]`.
+    fn restrict_to(&self, lo: f64, hi: f64) -> Self;
 }
 
 impl Real for f64 {
@@ -118,6 +130,12 @@ impl Real for f64 {
     fn bounds(&self) -> (f64, f64) {
         (*self, *self)
     }
+    fn hull_with(&self, _other: &Self) -> Self {
+        *self
+    }
+    fn restrict_to(&self, lo: f64, hi: f64) -> Self {
+        self.max(lo).min(hi)
+    }
 }
 
 #[cfg(test)]
@@ -137,5 +155,8 @@ mod tests {
         assert_eq!(3.0f64.lift(0.5), 0.5);
         assert_eq!(Real::sqr(&-3.0f64), 9.0);
         assert_eq!(Real::bounds(&1.5f64), (1.5, 1.5));
+        assert_eq!(2.5f64.restrict_to(0.0, 1.0), 1.0);
+        assert_eq!((-2.5f64).restrict_to(f64::NEG_INFINITY, 1.0), -2.5);
+        assert_eq!(2.5f64.hull_with(&7.0), 2.5);
     }
 }

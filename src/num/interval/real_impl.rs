@@ -26,6 +26,16 @@ impl Real for Interval {
     fn bounds(&self) -> (f64, f64) {
         (self.lo(), self.hi())
     }
+    fn hull_with(&self, other: &Self) -> Self {
+        self.hull(other)
+    }
+    /// Exact: the bounds are doubles, so the intersection needs no rounding.
+    fn restrict_to(&self, lo: f64, hi: f64) -> Self {
+        if lo > hi || lo.is_nan() || hi.is_nan() {
+            return Interval::EMPTY;
+        }
+        self.intersection(&Interval::from_bounds(lo, hi))
+    }
 }
 
 impl IntervalLike for Interval {

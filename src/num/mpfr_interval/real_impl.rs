@@ -39,6 +39,16 @@ impl Real for MpfrInterval {
     fn bounds(&self) -> (f64, f64) {
         (self.lo_f64(), self.hi_f64())
     }
+    fn hull_with(&self, other: &Self) -> Self {
+        self.hull(other)
+    }
+    /// Exact at 53 bits and more (the bounds are doubles).
+    fn restrict_to(&self, lo: f64, hi: f64) -> Self {
+        if lo > hi || lo.is_nan() || hi.is_nan() {
+            return MpfrInterval::empty(self.prec());
+        }
+        self.intersection(&MpfrInterval::from_bounds(lo, hi, self.prec()))
+    }
 }
 
 impl IntervalLike for MpfrInterval {

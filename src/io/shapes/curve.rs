@@ -1,0 +1,325 @@
+//! Curve objects of spec/CASES.md: `line`, `segment`, `circle`, `ellipse`, `hyperbola`,
+//! `parabola`, `helix`, `bezier`, `nurbs_curve` and the 2D `line2`, `segment2`,
+//! `circle2`, `ellipse2`, `bezier2`, `nurbs_curve2`, `conic2`; and, as an extension,
+//! `polyline` / `polyline2` (`points`, optional `params`, OPERATIONS.md §1.5).
+//!
+//! Every curve may carry `domain` (CASES.md "Any curve or surface may carry `domain`");
+//! `range` and `domain` are the same field where CASES.md writes `range`. A circle or
+//! ellipse with a `domain` is an arc (§1.5 circular and elliptic arcs). Rational
+//! Bézier curves and conic arcs are `bezier` with `weights`.
+
+pub use super::curve_fields::{
+    Analytic2Spec, AnalyticSpec, BezierSpec, Conic2Spec, LineSpec, NurbsCurveSpec, PolylineSpec,
+    SegmentSpec,
+};
+
+use super::curve_fields::{pair, P2, P3};
+use super::{parse_fields, take_type, to_json_with_type};
+use crate::curve::{AnyCurve2, AnyCurve3, Bezier, Conic2, Line, NurbsCurve, Polyline, Segment};
+use crate::error::GeomError;
+use serde_json::Value;
+
+/// A space curve as written.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Curve3Spec {
+    Line(LineSpec<P3>),
+    Segment(SegmentSpec<P3>),
+    Circle(AnalyticSpec),
+    Ellipse(AnalyticSpec),
+    Hyperbola(AnalyticSpec),
+    Parabola(AnalyticSpec),
+    Helix(AnalyticSpec),
+    Bezier(BezierSpec<P3>),
+    Nurbs(NurbsCurveSpec<P3>),
+    Polyline(PolylineSpec<P3>),
+}
+
+/// A plane curve as written (parametric, or the implicit `conic2`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Curve2Spec {
+    Line(LineSpec<P2>),
+    Segment(SegmentSpec<P2>),
+    Circle(Analytic2Spec),
+    Ellipse(Analytic2Spec),
+    Bezier(BezierSpec<P2>),
+    Nurbs(NurbsCurveSpec<P2>),
+    Polyline(PolylineSpec<P2>),
+    Conic(Conic2Spec),
+}
+
+/// A built plane curve: parametric or implicit.
+#[derive(Debug, Clone, PartialEq)]
+pub enum PlaneShape {
+    Curve(AnyCurve2),
+    Conic(Conic2),
+}
+
+/// The space curve types, as written in `type`.
+pub const CURVE3_TYPES: &[&str] = &[
+    "line",
+    "segment",
+    "circle",
+    "ellipse",
+    "hyperbola",
+    "parabola",
+    "helix",
+    "bezier",
+    "nurbs_curve",
+    "polyline",
+];
+
+/// The plane curve types, as written in `type`.
+pub const CURVE2_TYPES: &[&str] = &[
+    "line2",
+    "segment2",
+    "circle2",
+    "ellipse2",
+    "bezier2",
+    "nurbs_curve2",
+    "polyline2",
+    "conic2",
+];
+
+impl Curve3Spec {
+    /// The `type` name as written in JSON.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Curve3Spec::Line(_) => "line",
+            Curve3Spec::Segment(_) => "segment",
+            Curve3Spec::Circle(_) => "circle",
+            Curve3Spec::Ellipse(_) => "ellipse",
+            Curve3Spec::Hyperbola(_) => "hyperbola",
+            Curve3Spec::Parabola(_) => "parabola",
+            Curve3Spec::Helix(_) => "helix",
+            Curve3Spec::Bezier(_) => "bezier",
+            Curve3Spec::Nurbs(_) => "nurbs_curve",
+            Curve3Spec::Polyline(_) => "polyline",
+        }
+    }
+
+    /// Build and validate the curve; errors name fields relative to the object.
+    pub fn build(&self) -> Result<AnyCurve3, GeomError> {
+        let name = self.type_name();
+        Ok(match self {
+            Curve3Spec::Line(s) => AnyCurve3::Line(Line::new(s.origin, s.dir, pair(s.range))?),
+            Curve3Spec::Segment(s) => AnyCurve3::Segment(Segment::new(s.a, s.b, pair(s.domain))?),
+            Curve3Spec::Circle(s)
+            | Curve3Spec::Ellipse(s)
+            | Curve3Spec::Hyperbola(s)
+            | Curve3Spec::Parabola(s)
+            | Curve3Spec::Helix(s) => AnyCurve3::Analytic(s.build(name)?),
+            Curve3Spec::Bezier(s) => AnyCurve3::Bezier(Bezier::new(
+                s.points.clone(),
+                s.weights.clone(),
+                pair(s.domain),
+            )?),
+            Curve3Spec::Nurbs(s) => AnyCurve3::Nurbs(NurbsCurve::new(
+                s.degree,
+                s.knots.clone(),
+                s.points.clone(),
+                s.weights.clone(),
+                pair(s.domain),
+            )?),
+            Curve3Spec::Polyline(s) => {
+                AnyCurve3::Polyline(Polyline::new(s.points.clone(), s.params.clone())?)
+            }
+        })
+    }
+
+    /// The spec as a JSON object with its `type`.
+    pub fn to_json(&self) -> Value {
+        let name = self.type_name();
+        match self {
+            Curve3Spec::Line(s) => to_json_with_type(name, s),
+            Curve3Spec::Segment(s) => to_json_with_type(name, s),
+            Curve3Spec::Circle(s) | Curve3Spec::Ellipse(s) => to_json_with_type(name, s),
+            Curve3Spec::Hyperbola(s) | Curve3Spec::Helix(s) => {
+                rename_key(to_json_with_type(name, s), "domain", "range")
+            }
+            Curve3Spec::Parabola(s) => {
+                let v = rename_key(to_json_with_type(name, s), "domain", "range");
+                rename_key(v, "center", "vertex")
+            }
+            Curve3Spec::Bezier(s) => to_json_with_type(name, s),
+            Curve3Spec::Nurbs(s) => to_json_with_type(name, s),
+            Curve3Spec::Polyline(s) => to_json_with_type(name, s),
+        }
+    }
+}
+
+/// Write a field under the name CASES.md uses for this type.
+fn rename_key(mut v: Value, from: &str, to: &str) -> Value {
+    if let Some(map) = v.as_object_mut() {
+        if let Some(x) = map.remove(from) {
+            map.insert(to.into(), x);
+        }
+    }
+    v
+}
+
+impl Curve2Spec {
+    /// The `type` name as written in JSON.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Curve2Spec::Line(_) => "line2",
+            Curve2Spec::Segment(_) => "segment2",
+            Curve2Spec::Circle(_) => "circle2",
+            Curve2Spec::Ellipse(_) => "ellipse2",
+            Curve2Spec::Bezier(_) => "bezier2",
+            Curve2Spec::Nurbs(_) => "nurbs_curve2",
+            Curve2Spec::Polyline(_) => "polyline2",
+            Curve2Spec::Conic(_) => "conic2",
+        }
+    }
+
+    /// Build and validate the curve; errors name fields relative to the object.
+    pub fn build(&self) -> Result<PlaneShape, GeomError> {
+        let name = self.type_name();
+        let curve = match self {
+            Curve2Spec::Line(s) => AnyCurve2::Line(Line::new(s.origin, s.dir, pair(s.range))?),
+            Curve2Spec::Segment(s) => AnyCurve2::Segment(Segment::new(s.a, s.b, pair(s.domain))?),
+            Curve2Spec::Circle(s) | Curve2Spec::Ellipse(s) => AnyCurve2::Analytic(s.build(name)?),
+            Curve2Spec::Bezier(s) => AnyCurve2::Bezier(Bezier::new(
+                s.points.clone(),
+                s.weights.clone(),
+                pair(s.domain),
+            )?),
+            Curve2Spec::Nurbs(s) => AnyCurve2::Nurbs(NurbsCurve::new(
+                s.degree,
+                s.knots.clone(),
+                s.points.clone(),
+                s.weights.clone(),
+                pair(s.domain),
+            )?),
+            Curve2Spec::Polyline(s) => {
+                AnyCurve2::Polyline(Polyline::new(s.points.clone(), s.params.clone())?)
+            }
+            Curve2Spec::Conic(s) => return Ok(PlaneShape::Conic(Conic2::new(s.coeffs)?)),
+        };
+        Ok(PlaneShape::Curve(curve))
+    }
+
+    /// The spec as a JSON object with its `type`.
+    pub fn to_json(&self) -> Value {
+        let name = self.type_name();
+        match self {
+            Curve2Spec::Line(s) => to_json_with_type(name, s),
+            Curve2Spec::Segment(s) => to_json_with_type(name, s),
+            Curve2Spec::Circle(s) | Curve2Spec::Ellipse(s) => to_json_with_type(name, s),
+            Curve2Spec::Bezier(s) => to_json_with_type(name, s),
+            Curve2Spec::Nurbs(s) => to_json_with_type(name, s),
+            Curve2Spec::Polyline(s) => to_json_with_type(name, s),
+            Curve2Spec::Conic(s) => to_json_with_type(name, s),
+        }
+    }
+}
+
+/// An unknown type, or one of the other dimension.
+fn unknown_type(
+    field: &str,
+    found: &str,
+    expected: &[&str],
+    other: &[&str],
+    what: &str,
+) -> GeomError {
+    let reason = if other.contains(&found) {
+        format!("{found:?} is not a {what}")
+    } else {
+        format!(
+            "unknown {what} type {found:?}; this build knows {}",
+            expected.join(", ")
+        )
+    };
+    GeomError::Unsupported {
+        field: if field.is_empty() {
+            "type".into()
+        } else {
+            format!("{field}.type")
+        },
+        reason,
+    }
+}
+
+/// Read a space curve from its JSON value and validate it, naming errors below
+/// `field` (`objects[1]` → `objects[1].knots[3]`).
+pub fn parse_curve3(mut value: Value, field: &str) -> Result<Curve3Spec, GeomError> {
+    let type_name = take_type(&mut value, field)?;
+    let spec = match type_name.as_str() {
+        "line" => Curve3Spec::Line(parse_fields(value, field)?),
+        "segment" => Curve3Spec::Segment(parse_fields(value, field)?),
+        "circle" | "ellipse" | "hyperbola" | "parabola" | "helix" => {
+            // One struct holds the framed curves; each type takes only its CASES.md names.
+            let forbidden: &[(&str, &str)] = match type_name.as_str() {
+                "parabola" => &[("center", "vertex")],
+                "circle" | "ellipse" => &[("vertex", "center"), ("range", "domain")],
+                _ => &[("vertex", "center")],
+            };
+            if let Some((name, instead)) = forbidden.iter().find(|(k, _)| value.get(*k).is_some()) {
+                return Err(GeomError::Format {
+                    field: if field.is_empty() {
+                        name.to_string()
+                    } else {
+                        format!("{field}.{name}")
+                    },
+                    message: format!(
+                        "unknown field `{name}` for type {type_name} (write `{instead}`)"
+                    ),
+                });
+            }
+            let spec: AnalyticSpec = parse_fields(value, field)?;
+            match type_name.as_str() {
+                "circle" => Curve3Spec::Circle(spec),
+                "ellipse" => Curve3Spec::Ellipse(spec),
+                "hyperbola" => Curve3Spec::Hyperbola(spec),
+                "parabola" => Curve3Spec::Parabola(spec),
+                _ => Curve3Spec::Helix(spec),
+            }
+        }
+        "bezier" => Curve3Spec::Bezier(parse_fields(value, field)?),
+        "nurbs_curve" => Curve3Spec::Nurbs(parse_fields(value, field)?),
+        "polyline" => Curve3Spec::Polyline(parse_fields(value, field)?),
+        other => {
+            return Err(unknown_type(
+                field,
+                other,
+                CURVE3_TYPES,
+                CURVE2_TYPES,
+                "space curve",
+            ))
+        }
+    };
+    spec.build().map_err(|e| e.at(field))?;
+    Ok(spec)
+}
+
+/// Read a plane curve (or `conic2`) from its JSON value and validate it, naming
+/// errors below `field`.
+pub fn parse_curve2(mut value: Value, field: &str) -> Result<Curve2Spec, GeomError> {
+    let type_name = take_type(&mut value, field)?;
+    let spec = match type_name.as_str() {
+        "line2" => Curve2Spec::Line(parse_fields(value, field)?),
+        "segment2" => Curve2Spec::Segment(parse_fields(value, field)?),
+        "circle2" => Curve2Spec::Circle(parse_fields(value, field)?),
+        "ellipse2" => Curve2Spec::Ellipse(parse_fields(value, field)?),
+        "bezier2" => Curve2Spec::Bezier(parse_fields(value, field)?),
+        "nurbs_curve2" => Curve2Spec::Nurbs(parse_fields(value, field)?),
+        "polyline2" => Curve2Spec::Polyline(parse_fields(value, field)?),
+        "conic2" => Curve2Spec::Conic(parse_fields(value, field)?),
+        other => {
+            return Err(unknown_type(
+                field,
+                other,
+                CURVE2_TYPES,
+                CURVE3_TYPES,
+                "plane curve",
+            ))
+        }
+    };
+    spec.build().map_err(|e| e.at(field))?;
+    Ok(spec)
+}
+
+/// Read and build a space curve in one step.
+pub fn curve3_from_json(value: Value, field: &str) -> Result<AnyCurve3, GeomError> {
+    parse_curve3(value, field)?.build().map_err(|e| e.at(field))
+}
