@@ -230,6 +230,32 @@ impl<T: Real> Real for Dual<T> {
     fn bounds(&self) -> (f64, f64) {
         self.value.bounds()
     }
+    /// Joins two pieces of a piecewise formula: value and every partial derivative
+    /// hulled, so the result encloses the derivative of whichever piece applies.
+    fn hull_with(&self, other: &Self) -> Self {
+        let n = self.grad.len().max(other.grad.len());
+        let zero = self.value.zero_like();
+        let grad = (0..n)
+            .map(|i| {
+                let a = self.grad.get(i).unwrap_or(&zero);
+                let b = other.grad.get(i).unwrap_or(&zero);
+                a.hull_with(b)
+            })
+            .collect();
+        Dual {
+            value: self.value.hull_with(&other.value),
+            grad,
+        }
+    }
+    /// Restricts the value to one piece's parameter range; the derivative with respect
+    /// to the variables is unchanged (the restriction selects a piece, it does not
+    /// change the parameter).
+    fn restrict_to(&self, lo: f64, hi: f64) -> Self {
+        Dual {
+            value: self.value.restrict_to(lo, hi),
+            grad: self.grad.clone(),
+        }
+    }
 }
 
 /// Seed `x` as the variables of a gradient computation.

@@ -126,6 +126,16 @@ impl<I: IntervalLike> Real for Guarded<I> {
     fn exp(&self) -> Self {
         self.unary(self.value.exp())
     }
+    /// Joins pieces of a piecewise formula (B-spline spans, the seam of a periodic
+    /// curve). Conservatively not smooth: across a knot a B-spline may be only `C⁰`,
+    /// and the certifier's derivative-based conclusions must not rely on it.
+    fn hull_with(&self, other: &Self) -> Self {
+        Guarded::make(self.value.hull(&other.value), false)
+    }
+    /// Restricts to one piece's parameter range (smoothness unchanged).
+    fn restrict_to(&self, lo: f64, hi: f64) -> Self {
+        self.unary(self.value.restrict_to(lo, hi))
+    }
     fn ln(&self) -> Self {
         self.unary_if(self.value.ln(), positive(&self.value))
     }

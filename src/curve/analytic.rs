@@ -209,6 +209,10 @@ impl Curve<3> for Analytic {
     fn is_periodic(&self) -> bool {
         self.closed
     }
+    /// A closed circle or ellipse runs over `[0, 2π]`, whose end is rounded.
+    fn domain_rounded(&self) -> bool {
+        self.closed
+    }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         self.frame.map_jet(&self.shape.local_jet(t, order.min(3)))
     }
@@ -267,6 +271,10 @@ impl Curve<2> for Analytic2 {
         self.closed
     }
     fn is_periodic(&self) -> bool {
+        self.closed
+    }
+    /// A closed circle or ellipse runs over `[0, 2π]`, whose end is rounded.
+    fn domain_rounded(&self) -> bool {
         self.closed
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 2]> {

@@ -63,6 +63,9 @@ impl Curve<3> for AnyCurve3 {
     fn is_periodic(&self) -> bool {
         forward!(AnyCurve3, self, c => c.is_periodic())
     }
+    fn domain_rounded(&self) -> bool {
+        forward!(AnyCurve3, self, c => c.domain_rounded())
+    }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 3]> {
         forward!(AnyCurve3, self, c => c.jet(t, order))
     }
@@ -83,6 +86,9 @@ impl Curve<2> for AnyCurve2 {
     }
     fn is_periodic(&self) -> bool {
         forward!(AnyCurve2, self, c => c.is_periodic())
+    }
+    fn domain_rounded(&self) -> bool {
+        forward!(AnyCurve2, self, c => c.domain_rounded())
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 2]> {
         forward!(AnyCurve2, self, c => c.jet(t, order))

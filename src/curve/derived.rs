@@ -196,6 +196,10 @@ impl<const D: usize, C: Curve<D>> Curve<D> for Reparametrised<C> {
     fn is_periodic(&self) -> bool {
         self.closed && self.base.is_periodic()
     }
+    /// A closed reparametrisation wraps its base, whose period may be rounded.
+    fn domain_rounded(&self) -> bool {
+        self.closed && self.base.domain_rounded()
+    }
     fn jet<T: Real>(&self, tau: &T, order: usize) -> Vec<[T; D]> {
         let s = self.scale(tau);
         let t = tau.lift(self.t1) + (tau.clone() - tau.lift(self.tau0)) * &s;
