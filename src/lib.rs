@@ -11,6 +11,7 @@
 //! * [`io`] — the JSON case format (spec/CASES.md).
 
 pub mod certificate;
+pub mod certify;
 pub mod curve;
 pub mod error;
 pub mod geom;
