@@ -20,7 +20,7 @@ use std::cmp::Ordering;
 use rug::{Integer, Rational};
 
 use super::bracket::Bracket;
-use super::int_poly::IntPoly;
+use super::int_poly::{At, IntPoly};
 use super::poly::Polynomial;
 use crate::num::round::{round_rational, Rounded};
 
@@ -133,6 +133,25 @@ impl RealRoot {
         }
         while self.width() > *width {
             self.refine();
+        }
+    }
+
+    /// True when the root is also a root of `p` (exact): for an isolated root, `p`
+    /// vanishes there iff `h = gcd(factor, p)` does; `h` divides the square-free factor,
+    /// whose only root in the bracket is this one and whose ends are not roots, so that
+    /// happens iff `h` changes sign across the bracket. The zero polynomial vanishes
+    /// everywhere.
+    pub fn is_root_of(&self, p: &Polynomial) -> bool {
+        if p.is_zero() {
+            return true;
+        }
+        match &self.location {
+            Location::Exact(x) => p.eval(x).cmp0() == Ordering::Equal,
+            Location::Isolated(b) => {
+                let h = IntPoly::gcd(&self.factor, &IntPoly::from_polynomial(p));
+                h.degree() > 0
+                    && h.sign_at(At::Dyadic(&b.lo, b.e)) != h.sign_at(At::Dyadic(&b.hi, b.e))
+            }
         }
     }
 
