@@ -77,7 +77,7 @@ impl<const D: usize> QuadricForm<D> {
     /// `F(x)`, exactly.
     pub fn eval(&self, x: &[Rational; D]) -> Rational {
         let ax = self.mul_a(x);
-        dot(x, &ax) + Rational::from(dot(&self.b, x) * 2u32) + &self.c
+        dot(x, &ax) + dot(&self.b, x) * 2u32 + &self.c
     }
 
     /// `A·x`.
@@ -125,7 +125,7 @@ impl<const D: usize> QuadricForm<D> {
         // Shift by p: F(x) = (x−p)ᵀA(x−p) + 2 blᵀ(x−p) + c_l.
         let ap: [Rational; D] = std::array::from_fn(|i| dot(&a[i], p));
         let b: [Rational; D] = std::array::from_fn(|i| Rational::from(&bl[i] - &ap[i]));
-        let c = dot(p, &ap) - Rational::from(dot(&bl, p) * 2u32) + &local.c;
+        let c = dot(p, &ap) - dot(&bl, p) * 2u32 + &local.c;
         QuadricForm { a, b, c }
     }
 }
