@@ -288,6 +288,20 @@ fn rounding_of_hard_cases() {
             assert_rounds_correctly(&p, &x);
         }
     }
+    // A rational root inside a square-free factor of degree 4: (7x − 3)(x³ − 2·10¹⁰⁰).
+    let cube = Polynomial::from_coeffs(vec![
+        Rational::from(-2) * ten_pow(100),
+        q(0, 1),
+        q(0, 1),
+        q(1, 1),
+    ]);
+    let p = &Polynomial::from_i64s(&[-3, 7]) * &cube;
+    let r = real_roots(&p).unwrap();
+    assert_eq!(r.len(), 2);
+    assert_eq!(r[0].exact(), Some(&q(3, 7)));
+    assert_eq!(r[0].nearest(), 3.0 / 7.0);
+    assert!(!r[1].is_rational());
+    assert_rounds_correctly(&p, &r[1]);
     // Huge and tiny: x² − 2·10³⁰⁰ and 10³⁰⁰x² − 2.
     let huge = Polynomial::from_coeffs(vec![Rational::from(-2) * ten_pow(300), q(0, 1), q(1, 1)]);
     let tiny = Polynomial::from_coeffs(vec![q(-2, 1), q(0, 1), ten_pow(300)]);

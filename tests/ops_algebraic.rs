@@ -267,6 +267,20 @@ fn lines_through_a_torus_hit_0_2_3_4_times() {
         line_points(&along_x(0.0, 1.0)),
         vec![([-2.0, 0.0, 1.0], 2), ([2.0, 0.0, 1.0], 2)]
     );
+    // The same at 1e150 (D the double 1e150, R = 2D, r = D): x = ±D and ±3D, the
+    // latter correctly rounded as IEEE's product 3·D is; at 1e-150 likewise.
+    for big in [1e150, 1e-150] {
+        let t = TorusData::new([0.0; 3], [0.0, 0.0, 1.0], 2.0 * big, big).unwrap();
+        let r = intersect_line_torus([-5.0 * big, 0.0, 0.0], [big, 0.0, 0.0], &t).unwrap();
+        let xs: Vec<(f64, u32)> = line_points(&r.value)
+            .iter()
+            .map(|(p, m)| (p[0], *m))
+            .collect();
+        assert_eq!(
+            xs,
+            vec![(-3.0 * big, 1), (-big, 1), (big, 1), (3.0 * big, 1)]
+        );
+    }
     // A line parallel to the axis at ρ = 2 crosses the tube at z = ±1.
     let r = intersect_line_torus([2.0, 0.0, -4.0], [0.0, 0.0, 1.0], &torus).unwrap();
     assert_eq!(

@@ -34,6 +34,9 @@ pub(crate) struct Bracket {
     pub(crate) sign_lo: Ordering,
     /// log₂ of the QIR grid size.
     qir: u32,
+    /// `(g(lo)·2^{e·deg g}, g(hi)·2^{e·deg g})` once computed, kept exact across steps
+    /// (the points a step tests become the new ends).
+    values: Option<(Integer, Integer)>,
 }
 
 /// The dyadic `m/2ᵉ` as a rational.
@@ -49,8 +52,9 @@ impl Bracket {
             e,
             sign_lo,
             qir: 2,
+            values: None,
         };
-        b.normalize();
+        b.normalize(0);
         b
     }
 
@@ -67,15 +71,53 @@ impl Bracket {
         dyadic(&Integer::from(&self.hi - &self.lo), self.e)
     }
 
-    /// Drop common factors of two from the end points.
-    fn normalize(&mut self) {
+    /// True when the bracket is at most about one double's spacing wide:
+    /// `width·2⁵² ≤ max(|lo|, |hi|)`, or `width ≤ 2⁻¹⁰⁷⁴` (the subnormal spacing). Only
+    /// then can both ends round to the same double, so rounding is tried no earlier.
+    pub(crate) fn about_one_ulp(&self) -> bool {
+        let w = Integer::from(&self.hi - &self.lo);
+        let m = if self.lo.cmp_abs(&self.hi) == Ordering::Greater {
+            &self.lo
+        } else {
+            &self.hi
+        };
+        Integer::from(&w << 52u32).cmp_abs(m) != Ordering::Greater
+            || u64::from(w.significant_bits()) + 1074 <= u64::from(self.e)
+    }
+
+    /// Drop common factors of two from the end points; the cached values of the degree
+    /// `deg` polynomial scale by `2^{−s·deg}` (exactly: each term has the factor).
+    fn normalize(&mut self, deg: usize) {
         let tz = |x: &Integer| x.find_one(0).unwrap_or(u32::MAX);
         let s = tz(&self.lo).min(tz(&self.hi)).min(self.e);
         if s > 0 {
             self.lo >>= s;
             self.hi >>= s;
             self.e -= s;
+            if let Some((a, b)) = &mut self.values {
+                *a >>= s * deg as u32;
+                *b >>= s * deg as u32;
+            }
         }
+    }
+
+    /// The homogeneous values at the ends (computed if not cached).
+    fn take_values(&mut self, g: &IntPoly) -> (Integer, Integer) {
+        self.values.take().unwrap_or_else(|| {
+            (
+                g.eval_dyadic(&self.lo, self.e),
+                g.eval_dyadic(&self.hi, self.e),
+            )
+        })
+    }
+
+    /// Replace the bracket by `(lo/2ᵉ, hi/2ᵉ)` with the values there.
+    fn set(&mut self, ends: (Integer, Integer), e: u32, values: (Integer, Integer), deg: usize) {
+        self.lo = ends.0;
+        self.hi = ends.1;
+        self.e = e;
+        self.values = Some(values);
+        self.normalize(deg);
     }
 
     /// One refinement step (see the module documentation). Returns the root when a
@@ -93,20 +135,25 @@ impl Bracket {
     }
 
     fn bisect(&mut self, g: &IntPoly) -> Option<Rational> {
+        let deg = g.degree();
+        let (va, vb) = self.take_values(g);
+        let (va, vb) = (va << deg as u32, vb << deg as u32);
         let m = Integer::from(&self.lo + &self.hi);
-        self.lo <<= 1;
-        self.hi <<= 1;
-        self.e += 1;
-        let s = g.eval_dyadic(&m, self.e).cmp0();
+        let (lo, hi, e) = (
+            Integer::from(&self.lo << 1),
+            Integer::from(&self.hi << 1),
+            self.e + 1,
+        );
+        let vm = g.eval_dyadic(&m, e);
+        let s = vm.cmp0();
         if s == Ordering::Equal {
-            return Some(dyadic(&m, self.e));
+            return Some(dyadic(&m, e));
         }
         if s == self.sign_lo {
-            self.lo = m;
+            self.set((m, hi), e, (vm, vb), deg);
         } else {
-            self.hi = m;
+            self.set((lo, m), e, (va, vm), deg);
         }
-        self.normalize();
         None
     }
 
@@ -114,8 +161,8 @@ impl Bracket {
     /// the root, `Err` on failure (the bracket may still have shrunk, validly).
     fn qir_step(&mut self, g: &IntPoly) -> Result<Option<Rational>, ()> {
         let n = self.qir;
-        let va = g.eval_dyadic(&self.lo, self.e);
-        let vb = g.eval_dyadic(&self.hi, self.e);
+        let deg = g.degree();
+        let (va, vb) = self.take_values(g);
         let cells = Integer::from(1) << n;
         // va and vb have opposite signs, so va/(va − vb) ∈ (0, 1).
         let (k, _) = Integer::from(&va << n).div_rem_round(Integer::from(&va - &vb));
@@ -127,49 +174,56 @@ impl Bracket {
             k
         };
         let w = Integer::from(&self.hi - &self.lo);
+        // The grid at exponent e + n; values there scale by 2^{n·deg}.
         let lo = Integer::from(&self.lo << n);
         let hi = Integer::from(&self.hi << n);
         let e = self.e + n;
-        let sign_at = |idx: &Integer| -> (Ordering, Integer) {
-            let x: Integer = &lo + Integer::from(idx * &w);
+        let up = n * deg as u32;
+        let (va, vb) = (va << up, vb << up);
+        let point = |idx: &Integer| -> (Integer, Integer) {
             if idx.cmp0() == Ordering::Equal {
-                (self.sign_lo, x)
+                (lo.clone(), va.clone())
             } else if *idx == cells {
-                (self.sign_lo.reverse(), x)
+                (hi.clone(), vb.clone())
             } else {
-                (g.eval_dyadic(&x, e).cmp0(), x)
+                let x: Integer = &lo + Integer::from(idx * &w);
+                let v = g.eval_dyadic(&x, e);
+                (x, v)
             }
         };
-        let (sm, m) = sign_at(&k);
+        let (m, vm) = point(&k);
+        let sm = vm.cmp0();
         if sm == Ordering::Equal {
             return Ok(Some(dyadic(&m, e)));
         }
-        let (cell_lo, cell_hi, success) = if sm == self.sign_lo {
+        let success = if sm == self.sign_lo {
             // The root lies right of m.
-            let (s2, m2) = sign_at(&Integer::from(&k + 1u32));
+            let (m2, v2) = point(&Integer::from(&k + 1u32));
+            let s2 = v2.cmp0();
             if s2 == Ordering::Equal {
                 return Ok(Some(dyadic(&m2, e)));
             }
             if s2 != self.sign_lo {
-                (m, m2, true)
+                self.set((m, m2), e, (vm, v2), deg);
+                true
             } else {
-                (m2, hi, false)
+                self.set((m2, hi), e, (v2, vb), deg);
+                false
             }
         } else {
-            let (s0, m0) = sign_at(&Integer::from(&k - 1u32));
+            let (m0, v0) = point(&Integer::from(&k - 1u32));
+            let s0 = v0.cmp0();
             if s0 == Ordering::Equal {
                 return Ok(Some(dyadic(&m0, e)));
             }
             if s0 == self.sign_lo {
-                (m0, m, true)
+                self.set((m0, m), e, (v0, vm), deg);
+                true
             } else {
-                (lo, m0, false)
+                self.set((lo, m0), e, (va, v0), deg);
+                false
             }
         };
-        self.lo = cell_lo;
-        self.hi = cell_hi;
-        self.e = e;
-        self.normalize();
         if success {
             self.qir = (2 * n).min(MAX_QIR_BITS);
             Ok(None)

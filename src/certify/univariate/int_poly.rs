@@ -9,7 +9,7 @@
 
 use std::cmp::Ordering;
 
-use rug::{Integer, Rational};
+use rug::{Assign, Integer, Rational};
 
 use super::poly::Polynomial;
 
@@ -164,12 +164,22 @@ impl IntPoly {
     /// `p(m/2ᵉ)·2^{e·n}`, `n = deg p`: the sign of `p` at `m/2ᵉ` and, between two points
     /// of the same `e`, the ratio of the values.
     pub(crate) fn eval_dyadic(&self, m: &Integer, e: u32) -> Integer {
-        let mut acc = Integer::new();
         let n = self.degree();
+        let mut acc = Integer::with_capacity(
+            (self
+                .c
+                .iter()
+                .map(|c| c.significant_bits())
+                .max()
+                .unwrap_or(0) as usize)
+                + (n + 1) * (m.significant_bits().max(e) as usize + 1),
+        );
+        let mut term = Integer::new();
         for (i, ci) in self.c.iter().enumerate().rev() {
             acc *= m;
             if ci.cmp0() != Ordering::Equal {
-                acc += Integer::from(ci << (e as usize * (n - i)) as u32);
+                term.assign(ci << (e as usize * (n - i)) as u32);
+                acc += &term;
             }
         }
         acc

@@ -21,6 +21,7 @@
 mod bracket;
 mod int_poly;
 mod isolate;
+mod modular;
 mod poly;
 mod root;
 mod squarefree;
@@ -83,6 +84,15 @@ fn integer_factors(p: &Polynomial) -> Vec<(IntPoly, u32)> {
         .collect()
 }
 
+/// For each factor: proven to have no rational root (a cheap modular test; degrees 1
+/// and 2 are decided in closed form later anyway).
+fn irrational_flags(factors: &[(IntPoly, u32)]) -> Vec<bool> {
+    factors
+        .iter()
+        .map(|(g, _)| g.degree() >= 3 && modular::proves_no_rational_root(g))
+        .collect()
+}
+
 /// All real roots of a non-zero polynomial, increasing, each with its multiplicity and
 /// correctly rounded double. A non-zero constant has none.
 pub fn real_roots(p: &Polynomial) -> Result<Vec<RealRoot>, GeomError> {
@@ -113,6 +123,7 @@ fn roots_between(p: &Polynomial, lo: Option<&Rational>, hi: Option<&Rational>) -
             &acc * &g.to_polynomial()
         });
     let sturm = Sturm::new(&IntPoly::from_polynomial(&product));
+    let irrational = irrational_flags(&factors);
     let mut out = Vec::new();
     for iso in isolate(&sturm, lo, hi) {
         let root = match iso {
@@ -120,7 +131,7 @@ fn roots_between(p: &Polynomial, lo: Option<&Rational>, hi: Option<&Rational>) -
                 .iter()
                 .find(|(g, _)| g.sign_at(At::Rational(&x)) == Ordering::Equal)
                 .map(|(g, m)| RealRoot::new_exact(x, *m, g.clone())),
-            Isolated::Bracket(b) => factors.iter().find_map(|(g, m)| {
+            Isolated::Bracket(b) => factors.iter().zip(&irrational).find_map(|((g, m), &irr)| {
                 let sl = g.sign_at(At::Dyadic(&b.lo, b.e));
                 let sh = g.sign_at(At::Dyadic(&b.hi, b.e));
                 // g divides the square-free product, whose ends are not roots: g has a
@@ -130,6 +141,7 @@ fn roots_between(p: &Polynomial, lo: Option<&Rational>, hi: Option<&Rational>) -
                         Bracket::new(b.lo.clone(), b.hi.clone(), b.e, sl),
                         *m,
                         g.clone(),
+                        irr,
                     )
                 })
             }),

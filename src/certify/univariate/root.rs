@@ -53,15 +53,23 @@ impl RealRoot {
     }
 
     /// Build from a bracket of `factor` (ends not roots of `factor`, one root inside)
-    /// and decide rationality and rounding.
-    pub(crate) fn new_isolated(bracket: Bracket, multiplicity: u32, factor: IntPoly) -> RealRoot {
+    /// and decide rationality (skipped when `irrational` is already proven) and
+    /// rounding.
+    pub(crate) fn new_isolated(
+        bracket: Bracket,
+        multiplicity: u32,
+        factor: IntPoly,
+        irrational: bool,
+    ) -> RealRoot {
         let mut root = RealRoot {
             location: Location::Isolated(bracket),
             multiplicity,
             rounded: Rounded::exact(f64::NAN),
             factor,
         };
-        root.decide_rationality();
+        if !irrational {
+            root.decide_rationality();
+        }
         root.decide_rounding();
         root
     }
@@ -180,8 +188,11 @@ impl RealRoot {
                 }
                 Location::Isolated(b) => b,
             };
-            // The root is irrational, hence not zero: wait until the bracket has a sign.
-            if b.lo.cmp0() != Ordering::Less || b.hi.cmp0() != Ordering::Greater {
+            // The root is irrational, hence not zero: wait until the bracket has a sign,
+            // and try rounding only once it is about one ulp wide (a cheap test).
+            if (b.lo.cmp0() != Ordering::Less || b.hi.cmp0() != Ordering::Greater)
+                && b.about_one_ulp()
+            {
                 let lo = b.lo_rational();
                 let hi = b.hi_rational();
                 let (rl, rh) = (round_rational(&lo), round_rational(&hi));

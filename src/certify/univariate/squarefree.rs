@@ -9,6 +9,7 @@
 //! A root of `aᵢ` is a root of `f` of multiplicity exactly `i`.
 
 use super::int_poly::IntPoly;
+use super::modular::proves_square_free;
 use super::poly::Polynomial;
 
 /// One factor of the square-free decomposition.
@@ -52,8 +53,21 @@ pub fn square_free_decomposition(f: &Polynomial) -> Vec<SquareFreeFactor> {
         return out;
     }
     let f = f.monic();
+    if proves_square_free(&IntPoly::from_polynomial(&f)) {
+        return vec![SquareFreeFactor {
+            factor: f,
+            multiplicity: 1,
+        }];
+    }
     let df = f.derivative();
     let g = gcd(&f, &df);
+    if g.degree() == Some(0) {
+        // Already square-free: the common case, without the divisions below.
+        return vec![SquareFreeFactor {
+            factor: f,
+            multiplicity: 1,
+        }];
+    }
     let mut b = exact_quotient(&f, &g);
     let mut c = exact_quotient(&df, &g);
     let mut d = &c - &b.derivative();

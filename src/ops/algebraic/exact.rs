@@ -168,6 +168,19 @@ pub(crate) fn round_enclosure(x: &RatInterval) -> Option<Rounded> {
     if x.is_point() {
         return Some(round_rational(&x.lo));
     }
+    // Cheap test first: both ends can round alike only when the enclosure is about one
+    // ulp wide (width·2⁵² ≤ max |end|, or width ≤ 2⁻¹⁰⁷⁴).
+    let w = Rational::from(&x.hi - &x.lo);
+    let m = if x.lo.cmp_abs(&x.hi) == Ordering::Greater {
+        &x.lo
+    } else {
+        &x.hi
+    };
+    if Rational::from(&w << 52u32).cmp_abs(m) == Ordering::Greater
+        && w > (Rational::from(1) >> 1074u32)
+    {
+        return None;
+    }
     let (rl, rh) = (round_rational(&x.lo), round_rational(&x.hi));
     if rl.nearest != rh.nearest || rl.nearest.to_bits() != rh.nearest.to_bits() {
         return None;

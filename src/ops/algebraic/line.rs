@@ -85,7 +85,8 @@ pub(crate) fn line_cut<const D: usize>(
         .into_iter()
         .map(|mut t| {
             let point = std::array::from_fn(|i| round_affine(&mut t, &o[i], &d[i]));
-            let singular = gradient.iter().all(|g| t.is_root_of(g));
+            // At a singular point P and P' = ∇F·d both vanish: a simple root is regular.
+            let singular = t.multiplicity() > 1 && gradient.iter().all(|g| t.is_root_of(g));
             LineHit {
                 multiplicity: t.multiplicity(),
                 t,
