@@ -15,6 +15,7 @@
 //! 1e-300 to 1e300 are handled exactly (nothing overflows in rationals).
 
 mod bivariate;
+mod conic;
 mod conic_conic;
 mod exact;
 mod line;

@@ -31,7 +31,7 @@ pub struct QuadricForm<const D: usize> {
 /// The plane conic `F(x, y) = 0`, as the 2D quadric form.
 pub type Conic = QuadricForm<2>;
 
-fn zero<const D: usize>() -> [Rational; D] {
+pub(super) fn zero<const D: usize>() -> [Rational; D] {
     std::array::from_fn(|_| Rational::new())
 }
 
@@ -62,7 +62,7 @@ impl<const D: usize> QuadricForm<D> {
         Ok(q)
     }
 
-    fn require_non_zero(&self) -> Result<(), GeomError> {
+    pub(super) fn require_non_zero(&self) -> Result<(), GeomError> {
         let nz = |x: &Rational| x.cmp0() != Ordering::Equal;
         if self.a.iter().flatten().any(nz) || self.b.iter().any(nz) || nz(&self.c) {
             Ok(())
@@ -102,7 +102,11 @@ impl<const D: usize> QuadricForm<D> {
 
     /// The form in coordinates `x = p + M y` (`M` given by its columns): the exact
     /// pull-back of a form written in a local frame.
-    fn in_frame(local: &QuadricForm<D>, p: &[Rational; D], columns: &[[Rational; D]; D]) -> Self {
+    pub(super) fn in_frame(
+        local: &QuadricForm<D>,
+        p: &[Rational; D],
+        columns: &[[Rational; D]; D],
+    ) -> Self {
         // y = Mᵀ(x − p) for an orthonormal M: F(x) = (x−p)ᵀ M A_l Mᵀ (x−p) + 2 b_lᵀ Mᵀ (x−p) + c_l.
         let m = |i: usize, k: usize| &columns[k][i];
         let mut a: [[Rational; D]; D] = std::array::from_fn(|_| zero());
@@ -150,7 +154,7 @@ fn orthonormal_frame<const D: usize>(
 }
 
 /// A diagonal local form `Σ wᵢ yᵢ² + 2 Σ βᵢ yᵢ + γ`.
-fn diagonal<const D: usize>(
+pub(super) fn diagonal<const D: usize>(
     w: [Rational; D],
     beta: [Rational; D],
     gamma: Rational,
@@ -166,13 +170,13 @@ fn diagonal<const D: usize>(
     }
 }
 
-fn inv_sq(field: &str, x: f64) -> Result<Rational, GeomError> {
+pub(super) fn inv_sq(field: &str, x: f64) -> Result<Rational, GeomError> {
     let q = positive(field, x)?;
     Ok(Rational::from(&q * &q).recip())
 }
 
 /// A local-frame form pulled back when the frame is exactly orthonormal.
-fn framed<const D: usize>(
+pub(super) fn framed<const D: usize>(
     origin: &[f64; D],
     frame: &[[f64; D]; D],
     local: QuadricForm<D>,
@@ -302,7 +306,7 @@ impl QuadricForm<3> {
     }
 }
 
-fn identity<const D: usize>() -> [[Rational; D]; D] {
+pub(super) fn identity<const D: usize>() -> [[Rational; D]; D] {
     std::array::from_fn(|i| std::array::from_fn(|j| Rational::from(u32::from(i == j))))
 }
 
@@ -336,84 +340,5 @@ fn about_axis(a: &[Rational; 3], aa: &Rational, k2: &Rational) -> QuadricForm<3>
         }),
         b: zero(),
         c: Rational::new(),
-    }
-}
-
-impl QuadricForm<2> {
-    /// The conic `a x² + b xy + c y² + d x + e y + f = 0` (§1.7 with `a₁₂ = b/2`,
-    /// `a₁₃ = d/2`, `a₂₃ = e/2`), coefficients taken exactly; not all zero.
-    pub fn conic(coefficients: [f64; 6]) -> Result<Self, GeomError> {
-        let [a, b, c, d, e, f] = exact_vec("conic", &coefficients)?;
-        let half = |x: Rational| x / 2u32;
-        let q = QuadricForm {
-            a: [[a, half(b.clone())], [half(b), c]],
-            b: [half(d), half(e)],
-            c: f,
-        };
-        q.require_non_zero()?;
-        Ok(q)
-    }
-
-    /// Circle `|x − c|² = r²`, always exact.
-    pub fn circle(center: [f64; 2], radius: f64) -> Result<Self, GeomError> {
-        let c = exact_vec("center", &center)?;
-        let r = positive("radius", radius)?;
-        let local = diagonal(
-            [Rational::from(1), Rational::from(1)],
-            zero(),
-            -Rational::from(&r * &r),
-        );
-        Ok(QuadricForm::in_frame(&local, &c, &identity()))
-    }
-
-    /// Ellipse `x²/a² + y²/b² = 1` in the frame `center, frame[0], frame[1]`; `None`
-    /// unless the frame is exactly orthonormal (axis-aligned).
-    pub fn ellipse(
-        center: [f64; 2],
-        frame: [[f64; 2]; 2],
-        a: f64,
-        b: f64,
-    ) -> Result<Option<Self>, GeomError> {
-        let w = [inv_sq("a", a)?, inv_sq("b", b)?];
-        framed(&center, &frame, diagonal(w, zero(), Rational::from(-1)))
-    }
-
-    /// Hyperbola `x²/a² − y²/b² = 1` in an exactly orthonormal frame, else `None`.
-    pub fn hyperbola(
-        center: [f64; 2],
-        frame: [[f64; 2]; 2],
-        a: f64,
-        b: f64,
-    ) -> Result<Option<Self>, GeomError> {
-        let w = [inv_sq("a", a)?, -inv_sq("b", b)?];
-        framed(&center, &frame, diagonal(w, zero(), Rational::from(-1)))
-    }
-
-    /// Parabola `y² = 2f x` (§1.5, focal parameter `f`) in an exactly orthonormal frame,
-    /// else `None`.
-    pub fn parabola(
-        vertex: [f64; 2],
-        frame: [[f64; 2]; 2],
-        focal: f64,
-    ) -> Result<Option<Self>, GeomError> {
-        let f = positive("focal", focal)?;
-        let local = diagonal(
-            [Rational::new(), Rational::from(1)],
-            [-f, Rational::new()],
-            Rational::new(),
-        );
-        framed(&vertex, &frame, local)
-    }
-
-    /// The coefficients `(a, b, c, d, e, f)` of `a x² + b xy + c y² + d x + e y + f`.
-    pub fn coefficients(&self) -> [Rational; 6] {
-        [
-            self.a[0][0].clone(),
-            Rational::from(&self.a[0][1] * 2u32),
-            self.a[1][1].clone(),
-            Rational::from(&self.b[0] * 2u32),
-            Rational::from(&self.b[1] * 2u32),
-            self.c.clone(),
-        ]
     }
 }
