@@ -331,6 +331,34 @@ fn torus_with_unnormalised_and_tilted_axes() {
     assert!(!hits[0].singular && !hits[2].singular);
 }
 
+#[test]
+fn degenerate_tori() {
+    // Spindle R = 1, r = 2: along x through the centre the quartic has x = ±1 and ±3,
+    // but ±1 lie on the inner sheet (|q|² + R² − r² = −2 < 0), outside the surface.
+    let spindle = TorusData::new([0.0; 3], [0.0, 0.0, 1.0], 1.0, 2.0).unwrap();
+    let r = intersect_line_torus([-5.0, 0.0, 0.0], [1.0, 0.0, 0.0], &spindle).unwrap();
+    assert_eq!(
+        line_points(&r.value),
+        vec![([-3.0, 0.0, 0.0], 1), ([3.0, 0.0, 0.0], 1)]
+    );
+    assert!(r.reason.is_some());
+    // Along the axis: the two singular apexes z = ±√3, where both sheets meet.
+    let r = intersect_line_torus([0.0, 0.0, -5.0], [0.0, 0.0, 1.0], &spindle).unwrap();
+    let s3 = 3f64.sqrt();
+    assert_eq!(
+        line_points(&r.value),
+        vec![([0.0, 0.0, -s3], 2), ([0.0, 0.0, s3], 2)]
+    );
+    assert!(r.value.points().iter().all(|h| h.singular));
+    // R = 0 is the sphere of radius r: simple crossings, not squared ones.
+    let ball = TorusData::new([0.0; 3], [0.0, 0.0, 1.0], 0.0, 2.0).unwrap();
+    let r = intersect_line_torus([-5.0, 0.0, 0.0], [1.0, 0.0, 0.0], &ball).unwrap();
+    assert_eq!(
+        line_points(&r.value),
+        vec![([-2.0, 0.0, 0.0], 1), ([2.0, 0.0, 0.0], 1)]
+    );
+}
+
 /// `T(o + t·d)` for the torus about z with R = 2, r = 1, in MPFR at 300 bits.
 fn torus_sign(o: [f64; 3], d: [f64; 3], t: &Rational) -> std::cmp::Ordering {
     let t = MpfrInterval::from_rational(t, 300);
@@ -512,6 +540,43 @@ fn coincident_and_common_components() {
     let r = intersect_conics(&a, &b).unwrap();
     assert!(matches!(r.value, ConicCut::CommonComponent));
     assert!(!r.complete);
+    // Degenerate conics: the point conic x² + y² = 0 meets the line y = x twice at the
+    // origin (once per complex line); the double lines x² = 0 and y² = 0 four times.
+    let point = Conic::conic([1.0, 0.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+    let diagonal = Conic::conic([0.0, 0.0, 0.0, 1.0, -1.0, 0.0]).unwrap();
+    assert_eq!(
+        conic_points(&intersect_conics(&point, &diagonal).unwrap().value),
+        vec![([0.0, 0.0], 2)]
+    );
+    let xx = Conic::conic([1.0, 0.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    let yy = Conic::conic([0.0, 0.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
+    assert_eq!(
+        conic_points(&intersect_conics(&xx, &yy).unwrap().value),
+        vec![([0.0, 0.0], 4)]
+    );
+    // Two line pairs through the origin meet only there, four times; a circle through
+    // the node of x² − y² meets it twice there and once at (±1, 1).
+    let pair = Conic::conic([1.0, 0.0, -1.0, 0.0, 0.0, 0.0]).unwrap();
+    let cross = Conic::conic([0.0, 1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
+    let r = intersect_conics(&pair, &cross).unwrap();
+    assert_eq!((r.status, r.complete), (Status::Exact, true));
+    assert_eq!(conic_points(&r.value), vec![([0.0, 0.0], 4)]);
+    let circle = Conic::circle([0.0, 1.0], 1.0).unwrap();
+    let r = intersect_conics(&pair, &circle).unwrap();
+    assert_eq!((r.status, r.complete), (Status::Exact, true));
+    assert_eq!(
+        conic_points(&r.value),
+        vec![([-1.0, 1.0], 1), ([0.0, 0.0], 2), ([1.0, 1.0], 1)]
+    );
+    // The empty conic x² + y² + 1 = 0 meets nothing.
+    let empty = Conic::conic([1.0, 0.0, 1.0, 0.0, 0.0, 1.0]).unwrap();
+    assert!(
+        intersect_conics(&empty, &Conic::circle([0.0, 0.0], 1.0).unwrap())
+            .unwrap()
+            .value
+            .points()
+            .is_empty()
+    );
     // A line (degree-1 "conic") through a circle.
     let line = Conic::conic([0.0, 0.0, 0.0, 1.0, -1.0, 0.0]).unwrap(); // x = y
     let unit = Conic::circle([0.0, 0.0], 1.0).unwrap();
@@ -649,6 +714,35 @@ proptest! {
         let mut want: Vec<([f64; 2], u32)> = pts.iter().map(|&p| (scaled(p, k), 1)).collect();
         want.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap());
         prop_assert_eq!(conic_points(&r.value), want);
+    }
+
+    /// Random small integer conics (often degenerate: line pairs, double lines, points,
+    /// empty ones, shared lines): never undecided, at most four points counted with
+    /// multiplicity, and each reported box holds a common zero's enclosure — both
+    /// equations, evaluated in MPFR intervals over the box, contain 0.
+    #[test]
+    fn random_integer_conics(a in prop::array::uniform6(-3i64..=3), b in prop::array::uniform6(-3i64..=3)) {
+        prop_assume!(a.iter().any(|&x| x != 0) && b.iter().any(|&x| x != 0));
+        let conic = |c: [i64; 6]| Conic::conic(c.map(|x| x as f64)).unwrap();
+        let r = intersect_conics(&conic(a), &conic(b)).unwrap();
+        prop_assert_eq!(r.status, Status::Exact);
+        if let ConicCut::Points(points) = &r.value {
+            prop_assert!(r.complete);
+            prop_assert!(points.iter().map(|p| p.multiplicity).sum::<u32>() <= 4);
+            for p in points {
+                let iv = |root: &geocert::certify::univariate::RealRoot| {
+                    let (lo, hi) = root.interval();
+                    MpfrInterval::from_rational(&lo, P).hull(&MpfrInterval::from_rational(&hi, P))
+                };
+                let (x, y) = (iv(&p.x), iv(&p.y));
+                for c in [a, b] {
+                    let k = c.map(|v| mp(v as f64));
+                    let v = k[0].mul(&x.sqr()).add(&k[1].mul(&x.mul(&y))).add(&k[2].mul(&y.sqr()))
+                        .add(&k[3].mul(&x)).add(&k[4].mul(&y)).add(&k[5]);
+                    prop_assert!(*v.lo() <= 0 && *v.hi() >= 0);
+                }
+            }
+        }
     }
 
     /// Conics of the pencil tangent to a line ℓ at P₁ and through P₃, P₄ meet with

@@ -5,14 +5,17 @@
 //! 1. Generic position: shear `x = x' − λy` for the first `λ` of a fixed list for which
 //!    both equations have a constant non-zero leading coefficient in `y` (no point
 //!    escapes to infinity along the projection) and, for two quadratics, the first
-//!    subresultant coefficient `s₁ = f₂g₁ − f₁g₂` shares no root with `R = Res_y`: then
-//!    every root `x'` of `R` carries exactly one common `y = −s₀(x')/s₁(x')`, distinct
-//!    points have distinct `x'`, and the multiplicity of `x'` in `R` is the intersection
-//!    multiplicity of the point (projection in generic position: Basu, Pollack & Roy,
+//!    subresultant coefficient `s₁ = f₂g₁ − f₁g₂` vanishes at a root of `R = Res_y` only
+//!    where both quadratics in `y` are proportional with a double root (a point singular
+//!    on both curves, `y = −f₁/(2f₂)`; their discriminant vanishes at every root of
+//!    `gcd(R, s₁)`, checked exactly); elsewhere `y = −s₀(x')/s₁(x')`. Then every root
+//!    `x'` of `R` carries exactly one common point, distinct points have distinct `x'`,
+//!    and the multiplicity of `x'` in `R` is the intersection multiplicity of the point
+//!    (projection in generic position: Basu, Pollack & Roy,
 //!    *Algorithms in Real Algebraic Geometry*, §11.5; Fulton, *Algebraic Curves*, §1.6).
 //!    `R ≡ 0` for some (hence every) shear means a common component. Finitely many `λ`
 //!    fail (asymptotic directions, directions joining two of at most four points,
-//!    vertical tangents), so the list of 40 always holds a good one.
+//!    vertical tangents), so the list of 41 always holds a good one.
 //! 2. Each coordinate is identified as a root of its own elimination polynomial in the
 //!    original coordinates, `P_x = Res_y(F₁, F₂)` and `P_y = Res_x(F₁, F₂)`: they vanish
 //!    at every intersection point's `x`, resp. `y`. The enclosure of `y = −s₀/s₁` over
@@ -28,7 +31,7 @@ use super::bivariate::{common_root, resultant, Bivariate};
 use super::exact::RatInterval;
 use super::quadric::Conic;
 use crate::certificate::{Arithmetic, Certified};
-use crate::certify::univariate::{gcd, real_roots, Polynomial, RealRoot};
+use crate::certify::univariate::{gcd, real_roots, square_free_part, Polynomial, RealRoot};
 use crate::error::GeomError;
 use crate::num::round::Rounded;
 
@@ -93,10 +96,26 @@ struct Projection {
     r: Polynomial,
     num: Polynomial,
     den: Polynomial,
+    /// Fibres where both quadratics in `y` are proportional with a double root (a
+    /// point singular on both curves): the square-free `h` whose roots they are, and
+    /// `y = −f₁/(2f₂)` there.
+    double: Option<(Polynomial, Polynomial, Polynomial)>,
+}
+
+impl Projection {
+    /// `y = num(x')/den(x')` valid at the root `x'` of `R`.
+    fn ordinate(&self, xp: &RealRoot) -> (&Polynomial, &Polynomial) {
+        match &self.double {
+            Some((h, num, den)) if xp.is_root_of(h) => (num, den),
+            _ => (&self.num, &self.den),
+        }
+    }
 }
 
 enum Search {
     Found(Projection),
+    /// `R` is a non-zero constant: no common point, even complex.
+    Disjoint,
     CommonComponent,
     Exhausted,
 }
@@ -117,17 +136,33 @@ fn find_projection(f1: &Bivariate, f2: &Bivariate, d1: usize, d2: usize) -> Sear
         if r.is_zero() {
             return Search::CommonComponent;
         }
+        if r.degree() == Some(0) {
+            return Search::Disjoint;
+        }
         let Some((num, den)) = common_root(&f, &g) else {
             continue;
         };
-        if den.is_zero() || gcd(&r, &den).degree().unwrap_or(0) > 0 {
+        if den.is_zero() {
             continue;
+        }
+        // Where s₁ = 0 (only for two quadratics) the fibre must still hold one point:
+        // the quadratics are then proportional, and need a double root.
+        let h = gcd(&r, &den);
+        let mut double = None;
+        if h.degree().unwrap_or(0) > 0 {
+            let disc = &(&f[1] * &f[1]) - &(&f[0] * &f[2]).scale(&Rational::from(4));
+            let hs = square_free_part(&h);
+            if f.len() != 3 || !disc.div_rem(&hs).is_some_and(|(_, rem)| rem.is_zero()) {
+                continue;
+            }
+            double = Some((hs, -&f[1], f[2].scale(&Rational::from(2))));
         }
         return Search::Found(Projection {
             lambda,
             r,
             num,
             den,
+            double,
         });
     }
     Search::Exhausted
@@ -163,6 +198,10 @@ pub fn intersect_conics(c1: &Conic, c2: &Conic) -> Result<Certified<ConicCut>, G
     }
     let proj = match find_projection(&f1, &f2, d1, d2) {
         Search::Found(p) => p,
+        Search::Disjoint => {
+            let none = ConicCut::Points(Vec::new());
+            return Ok(Certified::exact(none, Arithmetic::Rational, 0));
+        }
         Search::CommonComponent => {
             let mut c = Certified::exact(ConicCut::CommonComponent, Arithmetic::Rational, 0);
             c.complete = false;
@@ -243,7 +282,8 @@ fn identify(
 ) -> Option<(usize, usize)> {
     for _ in 0..MAX_IDENTIFY_STEPS {
         let x_sheared = RatInterval::from_root(xp);
-        let Some(y) = x_sheared.eval(&proj.num).div(&x_sheared.eval(&proj.den)) else {
+        let (num, den) = proj.ordinate(xp);
+        let Some(y) = x_sheared.eval(num).div(&x_sheared.eval(den)) else {
             xp.refine();
             continue;
         };

@@ -197,3 +197,22 @@ pub(crate) fn round_enclosure(x: &RatInterval) -> Option<Rounded> {
         None
     }
 }
+
+/// The exact sign of `p` at a root `t`: zero when `t` is a root of `p`; otherwise `t`
+/// is refined until the Horner enclosure of `p` over its interval excludes zero (it
+/// converges to the non-zero value `p(t)`).
+pub(crate) fn sign_at_root(t: &mut RealRoot, p: &Polynomial) -> Ordering {
+    if t.is_root_of(p) {
+        return Ordering::Equal;
+    }
+    loop {
+        let v = RatInterval::from_root(t).eval(p);
+        if v.lo.cmp0() == Ordering::Greater {
+            return Ordering::Greater;
+        }
+        if v.hi.cmp0() == Ordering::Less {
+            return Ordering::Less;
+        }
+        t.refine();
+    }
+}

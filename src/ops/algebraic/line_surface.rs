@@ -14,7 +14,7 @@
 
 use rug::Rational;
 
-use super::exact::{dot, exact_line, exact_vec, positive};
+use super::exact::{dot, exact_line, exact_vec, positive, sign_at_root};
 use super::line::{affine, line_cut, LineCut};
 use super::quadric::QuadricForm;
 use crate::certificate::Certified;
@@ -31,14 +31,23 @@ pub fn intersect_line_quadric<const D: usize>(
     quadric: &QuadricForm<D>,
 ) -> Result<Certified<LineCut<D>>, GeomError> {
     let (o, d) = exact_line(&origin, &direction)?;
-    let ad = quadric.mul_a(&d);
-    let g0 = quadric.half_gradient(&o);
-    let alpha = dot(&d, &ad);
-    let beta = dot(&d, &g0);
-    let gamma = quadric.eval(&o);
+    Ok(line_quadric(&o, &d, quadric))
+}
+
+/// [`intersect_line_quadric`] on exact data.
+fn line_quadric<const D: usize>(
+    o: &[Rational; D],
+    d: &[Rational; D],
+    quadric: &QuadricForm<D>,
+) -> Certified<LineCut<D>> {
+    let ad = quadric.mul_a(d);
+    let g0 = quadric.half_gradient(o);
+    let alpha = dot(d, &ad);
+    let beta = dot(d, &g0);
+    let gamma = quadric.eval(o);
     let p = Polynomial::from_coeffs(vec![gamma, beta * 2u32, alpha]);
     let gradient: Vec<Polynomial> = (0..D).map(|i| affine(&g0[i], &ad[i])).collect();
-    Ok(line_cut(&o, &d, &p, &gradient))
+    line_cut(o, d, &p, &gradient)
 }
 
 /// Line against a plane conic (§6.3): [`intersect_line_quadric`] in 2D.
@@ -95,12 +104,24 @@ impl TorusData {
 /// Line `origin + t·direction` against a torus: the quartic of the module
 /// documentation, its real roots with exact multiplicities (0, 2 with one double, 3, 4
 /// hits, …), `status: exact`, `complete: true`.
+///
+/// Two degenerate tori of §1.6: with `R = 0` the quartic is the square of the sphere
+/// `|q|² = r²` (every point would be double and singular), so the sphere is solved
+/// instead. With `r > R` (spindle) the quartic's zero set is the outer "apple"
+/// (`|q|² + R² − r² = 2Rρ ≥ 0`) together with the inner "lemon" (`= −2Rρ ≤ 0`), which
+/// the §1.6 domain `v ∈ [−π+γ, π−γ]` excludes: points with `|q|² + R² − r² < 0` are
+/// dropped (decided exactly; the two axis points, where both sheets meet, are kept),
+/// and `reason` says so.
 pub fn intersect_line_torus(
     origin: [f64; 3],
     direction: [f64; 3],
     torus: &TorusData,
 ) -> Result<Certified<LineCut<3>>, GeomError> {
     let (o, d) = exact_line(&origin, &direction)?;
+    if torus.major.cmp0() == std::cmp::Ordering::Equal {
+        let sphere = QuadricForm::sphere_exact(&torus.center, &torus.minor);
+        return Ok(line_quadric(&o, &d, &sphere));
+    }
     let a = &torus.axis;
     let w: [Rational; 3] = std::array::from_fn(|i| Rational::from(&o[i] - &torus.center[i]));
     let aa = dot(a, a);
@@ -120,5 +141,15 @@ pub fn intersect_line_torus(
     let gradient: Vec<Polynomial> = (0..3)
         .map(|i| &(&radial * &affine(&w[i], &d[i])) + &axial.scale(&a[i]))
         .collect();
-    Ok(line_cut(&o, &d, &quartic, &gradient))
+    let mut cut = line_cut(&o, &d, &quartic, &gradient);
+    if torus.minor > torus.major {
+        if let LineCut::Points(hits) = &mut cut.value {
+            hits.retain_mut(|h| sign_at_root(&mut h.t, &s) != std::cmp::Ordering::Less);
+        }
+        cut.reason = Some(
+            "spindle torus: points of the quartic's inner sheet, outside the surface, are omitted"
+                .into(),
+        );
+    }
+    Ok(cut)
 }

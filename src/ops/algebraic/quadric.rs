@@ -190,9 +190,14 @@ impl QuadricForm<3> {
     pub fn sphere(center: [f64; 3], radius: f64) -> Result<Self, GeomError> {
         let c = exact_vec("center", &center)?;
         let r = positive("radius", radius)?;
+        Ok(QuadricForm::sphere_exact(&c, &r))
+    }
+
+    /// The sphere on exact data.
+    pub(super) fn sphere_exact(c: &[Rational; 3], r: &Rational) -> Self {
         let one = || Rational::from(1);
-        let local = diagonal([one(), one(), one()], zero(), -Rational::from(&r * &r));
-        Ok(QuadricForm::in_frame(&local, &c, &identity()))
+        let local = diagonal([one(), one(), one()], zero(), -Rational::from(r * r));
+        QuadricForm::in_frame(&local, c, &identity())
     }
 
     /// Ellipsoid `x²/a² + y²/b² + z²/c² = 1` in the frame `origin, frame[0..3]` (§1.6).
