@@ -671,6 +671,39 @@ proptest! {
         }
     }
 
+    /// A line through the centre of a sphere meets it at `c ± r·v/|v|` (irrational
+    /// unless |v|² is a square), at any magnitude 2^m: each coordinate is the correctly
+    /// rounded closed form (MPFR at 600 bits).
+    #[test]
+    fn diameters_at_any_magnitude(
+        center in prop::array::uniform3(-20i64..20), r in 1i64..20,
+        v in prop::array::uniform3(-6i64..6), k in -5i64..5, m in -500i32..500,
+    ) {
+        prop_assume!(v != [0, 0, 0]);
+        let s = pow2(m);
+        let c: [f64; 3] = center.map(|x| x as f64 * s);
+        let sphere = QuadricForm::sphere(c, r as f64 * s).unwrap();
+        let origin: [f64; 3] = std::array::from_fn(|n| (center[n] - k * v[n]) as f64 * s);
+        let dir = v.map(|x| x as f64);
+        let hits = intersect_line_quadric(origin, dir, &sphere).unwrap().value;
+        let hits = hits.points();
+        prop_assert_eq!(hits.len(), 2);
+        let vv: i64 = v.iter().map(|x| x * x).sum();
+        let root = mp(vv as f64).sqrt();
+        let is_square = (vv as f64).sqrt().fract() == 0.0;
+        for (h, sign) in hits.iter().zip([-1.0, 1.0]) {
+            prop_assert_eq!(h.multiplicity, 1);
+            prop_assert_eq!(h.t.is_rational(), is_square);
+            // t = 2^m (k ± r/|v|)
+            let t = mp(k as f64).add(&mp(sign * r as f64).div(&root)).mul(&mp(s));
+            prop_assert_eq!(h.t.nearest(), nearest_of(&t));
+            for n in 0..3 {
+                let x = mp(c[n]).add(&mp(sign * (r * v[n]) as f64 * s).div(&root));
+                prop_assert_eq!(h.point[n].nearest, nearest_of(&x));
+            }
+        }
+    }
+
     /// A line tangent to a sphere at an integer point: one double root there.
     #[test]
     fn tangent_lines_to_a_sphere(
@@ -714,6 +747,61 @@ proptest! {
         let mut want: Vec<([f64; 2], u32)> = pts.iter().map(|&p| (scaled(p, k), 1)).collect();
         want.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap());
         prop_assert_eq!(conic_points(&r.value), want);
+    }
+
+    /// Random integer quadric forms and tori against random integer lines: exact, at most
+    /// 2 (resp. 4) intersections with multiplicity, and each parameter interval holds a
+    /// zero of the restricted equation's MPFR enclosure.
+    #[test]
+    fn random_lines_against_quadrics_and_tori(
+        m in prop::array::uniform6(-3i64..=3), bc in prop::array::uniform4(-3i64..=3),
+        o in prop::array::uniform3(-4i64..=4), d in prop::array::uniform3(-3i64..=3),
+        (big_r, small_r) in (0i64..4, 1i64..4), axis in prop::array::uniform3(-2i64..=2),
+    ) {
+        prop_assume!(d != [0, 0, 0]);
+        let f = |v: i64| v as f64;
+        let a = [[f(m[0]), f(m[1]), f(m[2])], [f(m[1]), f(m[3]), f(m[4])], [f(m[2]), f(m[4]), f(m[5])]];
+        let on_line = |t: &Rational| -> [MpfrInterval; 3] {
+            let ti = MpfrInterval::from_rational(t, P);
+            std::array::from_fn(|i| mp(f(o[i])).add(&ti.mul(&mp(f(d[i])))))
+        };
+        let contains_zero = |v: &MpfrInterval| *v.lo() <= 0 && *v.hi() >= 0;
+        if let Ok(q) = QuadricForm::from_f64(a, [f(bc[0]), f(bc[1]), f(bc[2])], f(bc[3])) {
+            let r = intersect_line_quadric(o.map(f), d.map(f), &q).unwrap();
+            prop_assert_eq!(r.status, Status::Exact);
+            prop_assert!(r.value.points().iter().map(|h| h.multiplicity).sum::<u32>() <= 2);
+            for h in r.value.points() {
+                let (lo, hi) = h.t.interval();
+                let ti = MpfrInterval::from_rational(&lo, P).hull(&MpfrInterval::from_rational(&hi, P));
+                let x: [MpfrInterval; 3] = std::array::from_fn(|i| mp(f(o[i])).add(&ti.mul(&mp(f(d[i])))));
+                let mut v = mp(f(bc[3]));
+                for i in 0..3 {
+                    v = v.add(&mp(2.0 * f(bc[i])).mul(&x[i]));
+                    for j in 0..3 {
+                        v = v.add(&mp(a[i][j]).mul(&x[i]).mul(&x[j]));
+                    }
+                }
+                prop_assert!(contains_zero(&v));
+            }
+        }
+        if axis != [0, 0, 0] {
+            let torus = TorusData::new([0.0; 3], axis.map(f), f(big_r), f(small_r)).unwrap();
+            let r = intersect_line_torus(o.map(f), d.map(f), &torus).unwrap();
+            prop_assert_eq!(r.status, Status::Exact);
+            prop_assert!(r.value.points().iter().map(|h| h.multiplicity).sum::<u32>() <= 4);
+            let aa = axis.iter().map(|x| f(x * x)).sum::<f64>();
+            for h in r.value.points() {
+                let (lo, hi) = h.t.interval();
+                let q = on_line(&lo).iter().zip(on_line(&hi).iter()).map(|(x, y)| x.hull(y)).collect::<Vec<_>>();
+                let qq = q[0].sqr().add(&q[1].sqr()).add(&q[2].sqr());
+                let qa = q[0].mul(&mp(f(axis[0]))).add(&q[1].mul(&mp(f(axis[1])))).add(&q[2].mul(&mp(f(axis[2]))));
+                let k = mp(f(big_r * big_r - small_r * small_r));
+                let s = qq.add(&k);
+                let v = mp(aa).mul(&s.sqr()).sub(&mp(f(4 * big_r * big_r)).mul(&mp(aa).mul(&qq).sub(&qa.sqr())));
+                let v = if big_r == 0 { s } else { v };
+                prop_assert!(contains_zero(&v));
+            }
+        }
     }
 
     /// Random small integer conics (often degenerate: line pairs, double lines, points,
