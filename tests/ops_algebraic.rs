@@ -226,6 +226,17 @@ fn bad_input_is_a_typed_error() {
     assert_eq!(e.kind(), "invalid_value");
     let e = QuadricForm::<2>::from_f64([[1.0, 2.0], [0.0, 1.0]], [0.0; 2], 0.0).unwrap_err();
     assert_eq!((e.kind(), e.field()), ("invalid_value", "a[0][1]"));
+    let e = QuadricForm::<3>::from_f64([[0.0; 3]; 3], [0.0; 3], 0.0).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("invalid_value", "quadric"));
+    // The exact data round-trips: the sphere about (1, 2, 3) of radius 2 is
+    // x·x − 2(1, 2, 3)·x + 14 − 4.
+    let s = QuadricForm::sphere([1.0, 2.0, 3.0], 2.0).unwrap();
+    assert_eq!(
+        s.linear(),
+        &[Rational::from(-1), Rational::from(-2), Rational::from(-3)]
+    );
+    assert_eq!(s.constant(), &Rational::from(10));
+    assert_eq!(s.matrix()[1][1], 1);
 }
 
 #[test]

@@ -18,14 +18,15 @@ use super::exact::{dot, exact_vec, positive};
 use crate::error::GeomError;
 
 /// `F(x) = xᵀAx + 2bᵀx + c₀` in `D` dimensions (`D = 3`: quadric, `D = 2`: conic).
+/// Invariants (kept by every constructor): `A` symmetric, not every coefficient zero.
 #[derive(Debug, Clone, PartialEq)]
 pub struct QuadricForm<const D: usize> {
     /// The symmetric matrix `A`.
-    pub a: [[Rational; D]; D],
+    pub(super) a: [[Rational; D]; D],
     /// The vector `b` (half the linear coefficients).
-    pub b: [Rational; D],
+    pub(super) b: [Rational; D],
     /// The constant `c₀`.
-    pub c: Rational,
+    pub(super) c: Rational,
 }
 
 /// The plane conic `F(x, y) = 0`, as the 2D quadric form.
@@ -43,9 +44,20 @@ impl<const D: usize> QuadricForm<D> {
         for (i, row) in a.iter().enumerate() {
             am[i] = exact_vec(&format!("a[{i}]"), row)?;
         }
-        for (i, row) in am.iter().enumerate() {
+        let b = exact_vec("b", &b)?;
+        let c = crate::num::parse::rational_from_f64("c", c)?;
+        QuadricForm::from_rationals(am, b, c)
+    }
+
+    /// `F` from exact rationals; `a` must be symmetric and not every coefficient zero.
+    pub fn from_rationals(
+        a: [[Rational; D]; D],
+        b: [Rational; D],
+        c: Rational,
+    ) -> Result<Self, GeomError> {
+        for (i, row) in a.iter().enumerate() {
             for (j, x) in row.iter().enumerate() {
-                if *x != am[j][i] {
+                if *x != a[j][i] {
                     return Err(GeomError::InvalidValue {
                         field: format!("a[{i}][{j}]"),
                         reason: "the matrix of a quadric form must be symmetric".into(),
@@ -53,13 +65,24 @@ impl<const D: usize> QuadricForm<D> {
                 }
             }
         }
-        let q = QuadricForm {
-            a: am,
-            b: exact_vec("b", &b)?,
-            c: crate::num::parse::rational_from_f64("c", c)?,
-        };
+        let q = QuadricForm { a, b, c };
         q.require_non_zero()?;
         Ok(q)
+    }
+
+    /// The symmetric matrix `A`.
+    pub fn matrix(&self) -> &[[Rational; D]; D] {
+        &self.a
+    }
+
+    /// The vector `b` (half the linear coefficients).
+    pub fn linear(&self) -> &[Rational; D] {
+        &self.b
+    }
+
+    /// The constant `c₀`.
+    pub fn constant(&self) -> &Rational {
+        &self.c
     }
 
     pub(super) fn require_non_zero(&self) -> Result<(), GeomError> {
@@ -89,15 +112,6 @@ impl<const D: usize> QuadricForm<D> {
     pub fn half_gradient(&self, x: &[Rational; D]) -> [Rational; D] {
         let ax = self.mul_a(x);
         std::array::from_fn(|i| Rational::from(&ax[i] + &self.b[i]))
-    }
-
-    /// `λ·F` (`λ ≠ 0`): the same zero set.
-    pub fn scaled(&self, l: &Rational) -> Self {
-        QuadricForm {
-            a: std::array::from_fn(|i| std::array::from_fn(|j| Rational::from(&self.a[i][j] * l))),
-            b: std::array::from_fn(|i| Rational::from(&self.b[i] * l)),
-            c: Rational::from(&self.c * l),
-        }
     }
 
     /// The form in coordinates `x = p + M y` (`M` given by its columns): the exact
