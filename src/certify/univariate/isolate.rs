@@ -93,9 +93,11 @@ fn ceil_div(a: i64, b: i64) -> i64 {
     -((-a).div_euclid(b))
 }
 
-/// `k` with every root of `p` (non-zero leading and constant... any) below `2^k` in
-/// absolute value (Fujiwara: `|z| ≤ 2·maxᵢ |a_{n−i}/a_n|^{1/i}`); `None` when `p` has no
-/// non-zero coefficient below the leading one.
+/// `k` with every complex root of `p = Σ cᵢxⁱ` strictly below `2^k` in absolute value,
+/// by Fujiwara's bound `|z| ≤ 2·maxᵢ |a_{n−i}/a_n|^{1/i}` (its last term taken without
+/// the factor ½, which only enlarges it) with `|a_{n−i}| < 2^{Lᵢ}`, `|a_n| ≥ 2^{L_n−1}`
+/// from the bit lengths; `None` when `p` has no non-zero coefficient below the leading
+/// one (then 0 is its only root).
 fn upper_exponent(c: &[Integer]) -> Option<i64> {
     let n = c.len() - 1;
     let ln = i64::from(c[n].significant_bits());

@@ -15,6 +15,9 @@
 //! 4. on request, refinement of the interval to any width (bisection and quadratic
 //!    interval refinement, `bracket`).
 //!
+//! Tests modulo small primes (`modular`) may prove square-freeness or the absence of
+//! rational roots first and skip exact work; they never decide anything alone.
+//!
 //! Entry points: [`real_roots`], [`real_roots_in`], [`count_real_roots`],
 //! [`count_real_roots_in`]. The zero polynomial is rejected (every number is a root).
 

@@ -8,7 +8,8 @@
 //! integer polynomial `g` has `b | lc(g)` (rational root theorem), so `lc(g)·x` is an
 //! integer; once the bracket is narrower than `1/lc(g)` it holds at most one such
 //! candidate, which is tested exactly. Degrees 1 and 2 are decided in closed form
-//! (a quadratic has rational roots iff its discriminant is a square).
+//! (a quadratic has rational roots iff its discriminant is a square). A factor that a
+//! small prime proves to have no rational root (`modular`) skips the test.
 //!
 //! Correct rounding: nearest rounding is monotone, so when both ends of the bracket
 //! round to the same double `d` and `d` lies outside the bracket, the root rounds to
