@@ -27,6 +27,10 @@
 //! Nothing is concluded where the system is not proven smooth ([`guarded`]): a system
 //! may be defined on part of space only (a `sqrt`, a division).
 //!
+//! * [`univariate`] — exact real roots of univariate polynomials with rational
+//!   coefficients (square-free decomposition, Sturm sequences, correct rounding), so
+//!   that algebraic problems are decided `exact` (double roots with multiplicity 2).
+//!
 //! Precision: each root reports the precision (`bits`: 53 for f64 intervals) of the
 //! proof that decided it; a result's `bits` is the highest precision that decided any
 //! part of it.
@@ -45,6 +49,7 @@ mod root;
 mod solve;
 pub mod subdivide;
 pub mod system;
+pub mod univariate;
 
 pub use root::certify_root;
 pub use solve::solve;

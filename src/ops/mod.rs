@@ -1,6 +1,7 @@
 //! Operations on shapes (ARCHITECTURE.md layer `ops/`): each operation's float solver
 //! and its certificate live together here.
 
+pub mod algebraic;
 pub mod certified;
 pub mod classify;
 pub mod closed_surface;

@@ -1,0 +1,30 @@
+//! Intersections decided exactly where the problem is algebraic (issue 6;
+//! CERTIFICATION.md level `exact`): a line against a quadric or a torus (OPERATIONS.md
+//! §5.2 with §1.6–§1.7), a line against a conic and conic against conic in the plane
+//! (§6.3–§6.4), through polynomials of degree ≤ 4 with rational coefficients solved by
+//! [`crate::certify::univariate`].
+//!
+//! Inputs are doubles taken as exact rationals; the surfaces are given by their exact
+//! implicit data ([`QuadricForm`], [`TorusData`]), whose constructors return `None`
+//! where a primitive's implicit form is not rational (then the caller certifies
+//! numerically). Every result is `Certified` with `status: exact`,
+//! `complete: true`, `arithmetic: rational`, `bits` the largest coefficient bit length:
+//! points carry their correctly rounded coordinates (with enclosures), the exact or
+//! isolated parameters, and their intersection multiplicity, so a tangency is a proven
+//! double root and two close crossings are two proven simple ones. Magnitudes from
+//! 1e-300 to 1e300 are handled exactly (nothing overflows in rationals).
+
+mod bivariate;
+mod conic;
+mod conic_conic;
+mod exact;
+mod line;
+mod line_surface;
+mod quadric;
+
+pub use conic_conic::{intersect_conics, ConicCut, ConicHit};
+pub use line::{LineCut, LineHit};
+pub use line_surface::{
+    intersect_line_conic, intersect_line_quadric, intersect_line_torus, TorusData,
+};
+pub use quadric::{Conic, QuadricForm};
