@@ -1,7 +1,7 @@
 //! The certifier (src/certify, issue 4) on systems with known roots: circles meeting
 //! transversally, tangent, nearly tangent and nearly missing; a line tangent to a
 //! sphere; the 6×6 three-surface system of three spheres; systems defined on half a line.
-//! Every truth is computed in closed form at 300 bits (tests/certify_support).
+//! Every truth is computed in closed form at 1100 bits (tests/certify_support).
 
 mod certify_support;
 

@@ -38,6 +38,7 @@
 use super::boxes::{self, IBox};
 use super::dual::{jet2, Dual};
 use super::guarded::{all_smooth, Guarded};
+use super::krawczyk::smooth_jacobian;
 use super::level::CertInterval;
 use super::linalg::{identity_minus_product, inverse_f64, mat_vec, mid_matrix, norm_inf_upper};
 use super::system::System;
@@ -217,12 +218,7 @@ fn parametric_krawczyk<S: System, I: CertInterval>(
     let bits = w[0].precision_bits();
     let ulps = (-(f64::from(bits) - 4.0)).exp2();
     for _ in 0..6 {
-        let gw: Vec<Guarded<I>> = w.iter().cloned().map(Guarded::new).collect();
-        let (_, jac) = local.eval_with_jacobian(&gw);
-        if !jac.iter().all(|r| all_smooth(r)) {
-            return None;
-        }
-        let jac: Vec<Vec<I>> = jac.into_iter().map(unguard).collect();
+        let (_, jac) = smooth_jacobian(local, &w)?;
         let (a, _) = blocks(&jac);
         let mut c_pt = boxes::midpoint(&w[..n - 1]);
         c_pt.push(w[n - 1].clone());
@@ -345,20 +341,22 @@ pub fn no_root<S: System, I: CertInterval>(count: &CountRegion<'_, S, I>, t0: f6
     let full = |z: &[I]| {
         let mut v = z.to_vec();
         v.push(tp.clone());
-        v.into_iter().map(Guarded::new).collect::<Vec<_>>()
+        v
     };
+    let guard = |v: Vec<I>| v.into_iter().map(Guarded::new).collect::<Vec<_>>();
     for _ in 0..8 {
         if n == 1 {
             break;
         }
-        let (_, jac) = local.eval_with_jacobian(&full(&z));
-        let jac: Vec<Vec<I>> = jac.into_iter().map(unguard).collect();
+        let Some((_, jac)) = smooth_jacobian(local, &full(&z)) else {
+            return false;
+        };
         let (a, _) = blocks(&jac);
         let Some(ya) = I::approx_inverse(&mid_matrix(&a)) else {
             return false;
         };
         let c = boxes::midpoint(&z);
-        let fc = unguard(local.eval(&full(&c)));
+        let fc = unguard(local.eval(&guard(full(&c))));
         let cm = identity_minus_product(&ya, &a);
         let yf = mat_vec(&ya, &fc[..n - 1]);
         let d: Vec<I> = (0..n - 1).map(|i| z[i].clone() - &c[i]).collect();
@@ -369,12 +367,9 @@ pub fn no_root<S: System, I: CertInterval>(count: &CountRegion<'_, S, I>, t0: f6
             None => return false,
         }
     }
-    let (g, jac) = local.eval_with_jacobian(&full(&z));
-    if !all_smooth(&g) || !jac.iter().all(|r| all_smooth(r)) {
+    let Some((g, jac)) = smooth_jacobian(local, &full(&z)) else {
         return false;
-    }
-    let g = unguard(g);
-    let jac: Vec<Vec<I>> = jac.into_iter().map(unguard).collect();
+    };
     let (a, gt) = blocks(&jac);
     let mut phi1 = jac[n - 1][n - 1].clone();
     if n > 1 {

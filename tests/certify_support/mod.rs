@@ -1,5 +1,5 @@
 //! Systems with known roots for the certifier's tests, and their roots computed
-//! independently in closed form with 300-bit MPFR (never by the code under test).
+//! independently in closed form with 1100-bit MPFR (never by the code under test).
 
 #![allow(dead_code)]
 
@@ -8,8 +8,9 @@ use geocert::num::{MpfrInterval, Real};
 use rug::ops::Pow;
 use rug::Float;
 
-/// The precision of the reference roots.
-pub const TRUTH_BITS: u32 = 300;
+/// The precision of the reference roots: beyond twice the highest precision a proof
+/// uses, so a truth is far narrower than any enclosure it is tested against.
+pub const TRUTH_BITS: u32 = 1100;
 
 /// Two circles `|x − a|² = ra2 + ea`, `|x − b|² = rb2`, each constant a double (the
 /// perturbation `ea` is kept apart so that `1 + 2⁻¹⁰⁰` can be written exactly).
@@ -34,7 +35,7 @@ impl Circles {
         }
     }
 
-    /// The intersection points in closed form at 300 bits: with `d = |b − a|`,
+    /// The intersection points in closed form at [`TRUTH_BITS`]: with `d = |b − a|`,
     /// `ℓ = (ra² − rb² + d²)/(2d)` along `b − a` and `h² = ra² − ℓ²` across. Returns the
     /// points and `h²` (negative: no root; zero: a double root).
     pub fn truth(&self) -> (Vec<[Float; 2]>, Float) {
@@ -146,7 +147,7 @@ impl System for ThreeSpheres {
 
 impl ThreeSpheres {
     /// Unit spheres at the origin, `(1, 0, 0)` and `(0, 1, 0)`: they meet at
-    /// `(1/2, 1/2, ±1/√2)`. The parameters of the upper point on each sphere at 300 bits:
+    /// `(1/2, 1/2, ±1/√2)`. The parameters of the upper point on each sphere at [`TRUTH_BITS`]:
     /// `u = atan2(d_y, d_x)`, `v = asin(d_z)` for the unit direction `d = p − c`.
     pub fn unit_triple() -> (Self, Vec<Float>) {
         let sys = ThreeSpheres {
@@ -181,7 +182,7 @@ impl System for SqrtMinus {
     }
 }
 
-/// True if the 300-bit point lies in the root's exact (MPFR) enclosure.
+/// True if the 1100-bit point lies in the root's exact (MPFR) enclosure.
 pub fn encloses(root: &Root, point: &[Float]) -> bool {
     root.enclosure_mpfr
         .iter()
@@ -199,14 +200,14 @@ pub fn count_inside(root: &Root, points: &[Vec<Float>]) -> usize {
     points.iter().filter(|p| encloses(root, p)).count()
 }
 
-/// True if the 300-bit point lies in the f64 box.
+/// True if the 1100-bit point lies in the f64 box.
 pub fn in_box(bx: &[geocert::num::Interval], point: &[Float]) -> bool {
     bx.iter()
         .zip(point)
         .all(|(iv, x)| MpfrInterval::from_interval(iv, 53).contains_float(x))
 }
 
-/// A 300-bit point from doubles.
+/// A 1100-bit point from doubles.
 pub fn point(x: &[f64]) -> Vec<Float> {
     x.iter().map(|&v| Float::with_val(TRUTH_BITS, v)).collect()
 }

@@ -1,0 +1,151 @@
+//! Properties of the certifier (src/certify, issue 4) on random circle pairs, against
+//! roots computed independently in closed form at 1100 bits:
+//! * every `verified` box holds exactly one true root (never none, never two);
+//! * every `verified_singular` box holds at most two;
+//! * a `complete` answer has every true root in the domain inside a reported box;
+//! * `certify_root` from a perturbed guess encloses the true root nearest to it.
+//!
+//! Pairs are generic (random centres and radii), exactly tangent (dyadic data), or
+//! nearly tangent — externally or internally — with a gap `g = 10^-k`, `3 ≤ k ≤ 15`, on
+//! either side (two roots, or none).
+
+mod certify_support;
+
+use certify_support::*;
+use geocert::certify::{certify_root, solve, Options, Solutions};
+use geocert::{Certified, Status};
+use proptest::prelude::*;
+use rug::Float;
+
+const DOMAIN: [[f64; 2]; 2] = [[-4.0, 4.0], [-4.0, 4.0]];
+
+/// The properties of the module documentation for one answer.
+fn sound(r: &Certified<Solutions>, truth: &[Vec<Float>]) -> Result<(), TestCaseError> {
+    let s = &r.value;
+    let boxes: Vec<_> = s.roots.iter().chain(&s.boundary_roots).collect();
+    for root in &boxes {
+        let k = count_inside(root, truth);
+        match root.status {
+            Status::Verified => prop_assert_eq!(k, 1, "verified box with {} roots: {:?}", k, root),
+            Status::VerifiedSingular => {
+                prop_assert!(k <= 2, "{:?}", root);
+                prop_assert_eq!(root.max_roots, 2);
+                prop_assert!(root.perturbation.is_some());
+            }
+            other => prop_assert!(false, "status {:?}", other),
+        }
+    }
+    // distinct verified boxes hold distinct roots: their count never exceeds the truth's
+    let verified = boxes
+        .iter()
+        .filter(|b| b.status == Status::Verified)
+        .count();
+    prop_assert!(verified <= truth.len());
+    prop_assert_eq!(r.complete, s.undecided.is_empty());
+    if r.complete {
+        for t in truth {
+            prop_assert!(
+                boxes.iter().any(|b| encloses(b, t)),
+                "complete, but the root {:?} is in no box",
+                t
+            );
+        }
+    }
+    Ok(())
+}
+
+fn truth_of(c: &Circles) -> Vec<Vec<Float>> {
+    c.truth().0.iter().map(as_vec).collect()
+}
+
+/// A dyadic number `k/8` in `[lo, hi]`.
+fn dyadic(lo: i32, hi: i32) -> impl Strategy<Value = f64> {
+    (lo * 8..=hi * 8).prop_map(|k| f64::from(k) / 8.0)
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 32, ..ProptestConfig::default() })]
+
+    #[test]
+    fn generic_pairs(
+        a in prop::array::uniform2(-1.5f64..1.5),
+        b in prop::array::uniform2(-1.5f64..1.5),
+        ra2 in 0.2f64..2.5,
+        rb2 in 0.2f64..2.5,
+    ) {
+        let c = Circles { a, ra2, ea: 0.0, b, rb2 };
+        let r = solve(&c, &DOMAIN, &Options::default()).unwrap();
+        sound(&r, &truth_of(&c))?;
+    }
+
+    #[test]
+    fn tangent_pairs(
+        a in prop::array::uniform2(dyadic(-1, 1)),
+        ra in dyadic(1, 2),
+        rb in dyadic(1, 2),
+        internal in any::<bool>(),
+        vertical in any::<bool>(),
+    ) {
+        // exactly tangent: centres |ra ± rb| apart along an axis (all data dyadic)
+        let d = if internal { ra - rb } else { ra + rb };
+        let b = if vertical { [a[0], a[1] + d] } else { [a[0] + d, a[1]] };
+        let c = Circles { a, ra2: ra * ra, ea: 0.0, b, rb2: rb * rb };
+        let r = solve(&c, &DOMAIN, &Options::default()).unwrap();
+        let truth = truth_of(&c);
+        sound(&r, &truth)?;
+        if internal && ra == rb {
+            // coincident circles: a curve of roots, never complete
+            prop_assert!(!r.complete);
+        } else {
+            prop_assert_eq!(truth.len(), 1);
+            prop_assert!(r.value.roots.iter().chain(&r.value.boundary_roots)
+                .all(|x| x.status == Status::VerifiedSingular));
+        }
+    }
+
+    #[test]
+    fn nearly_tangent_pairs(
+        ra in dyadic(1, 2),
+        rb in dyadic(1, 2),
+        k in 3i32..=15,
+        meet in any::<bool>(),
+        internal in any::<bool>(),
+    ) {
+        prop_assume!(!(internal && ra == rb));
+        let g = 10f64.powi(-k);
+        let touch = if internal { (ra - rb).abs() } else { ra + rb };
+        // closer than touching: two roots for external, none for internal; farther: reverse
+        let d = if meet != internal { touch - g } else { touch + g };
+        let c = Circles { a: [0.0, 0.0], ra2: ra * ra, ea: 0.0, b: [d, 0.0], rb2: rb * rb };
+        let truth = truth_of(&c);
+        let r = solve(&c, &DOMAIN, &Options::default()).unwrap();
+        sound(&r, &truth)?;
+        prop_assert!(r.complete, "{:?}", r.value.undecided);
+        let verified = r.value.roots.iter().filter(|x| x.status == Status::Verified).count();
+        let singular = r.value.roots.len() - verified;
+        // either both roots proven, or one singular box, or (no roots) nothing at all
+        prop_assert!(
+            (verified == truth.len() && singular == 0) || (verified == 0 && singular == 1),
+            "{} verified, {} singular, truth {}", verified, singular, truth.len()
+        );
+    }
+
+    #[test]
+    fn certify_root_from_a_perturbed_guess(
+        a in prop::array::uniform2(-1.0f64..1.0),
+        angle in 0.3f64..2.8,
+        noise in prop::array::uniform2(-1e-6f64..1e-6),
+    ) {
+        // unit circles whose centres are 2 cos(angle/2) apart: transversal
+        let d = 2.0 * (angle / 2.0).cos();
+        let c = Circles { a, ra2: 1.0, ea: 0.0, b: [a[0] + d, a[1]], rb2: 1.0 };
+        let truth = truth_of(&c);
+        prop_assert_eq!(truth.len(), 2);
+        let t: Vec<f64> = truth[0].iter().map(|v| v.to_f64()).collect();
+        let guess = [t[0] + noise[0], t[1] + noise[1]];
+        let r = certify_root(&c, &guess, &Options::default()).unwrap();
+        prop_assert_eq!(r.status, Status::Verified);
+        prop_assert!(encloses(&r.value, &truth[0]));
+        prop_assert!(!encloses(&r.value, &truth[1]));
+    }
+}
