@@ -119,6 +119,13 @@ pub struct VerifiedRoot<I> {
 /// Narrow the enclosure of the unique root of `region` by iterating `E ← E ∩ K(E)` (every
 /// `K(E)` contains the root, since it lies in `E`).
 pub fn tighten<S: System, I: CertInterval>(sys: &S, mut e: IBox<I>, steps: usize) -> IBox<I> {
+    // already within a few units in the last place of the box's scale: nothing to gain
+    let bits = e.first().map_or(53, |v| v.precision_bits());
+    let scale = e.iter().map(|v| v.mag()).fold(1.0, f64::max);
+    let ulps = (-(f64::from(bits) - 4.0)).exp2() * scale;
+    if e.iter().all(|v| v.wid() <= ulps) {
+        return e;
+    }
     for _ in 0..steps {
         let before: f64 = boxes::widths(&e).into_iter().fold(0.0, f64::max);
         let k = match krawczyk(sys, &e) {

@@ -46,7 +46,7 @@ mod solve;
 pub mod subdivide;
 pub mod system;
 
-pub use root::certify_root;
+pub use root::{certify_root, certify_root_at};
 pub use solve::solve;
 pub use system::System;
 

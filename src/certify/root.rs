@@ -74,6 +74,24 @@ pub fn certify_root<S: System>(
     Ok(undecided(&x, reason))
 }
 
+/// One escalation level of [`certify_root`]: certify the root near the point `x` with
+/// Krawczyk at `bits` bits only (53: f64 intervals; more: MPFR, after Newton at that
+/// precision), without the singular test; `Ok(None)` if that precision does not prove it.
+/// Errors as [`certify_root`].
+pub fn certify_root_at<S: System>(
+    sys: &S,
+    x: &[f64],
+    bits: u32,
+) -> Result<Option<Root>, GeomError> {
+    check_point("guess", x, sys.dim())?;
+    check_system(sys, x)?;
+    Ok(if bits <= 53 {
+        certify_at::<S, Interval>(sys, x, 0.0, 53)
+    } else {
+        certify_at::<S, MpfrInterval>(sys, x, 0.0, bits)
+    })
+}
+
 /// Certify the root near `x` at one precision: refine by Newton at that precision, then
 /// Krawczyk with epsilon-inflation from a box of the refined point's expected accuracy.
 fn certify_at<S: System, I: CertInterval>(
@@ -91,12 +109,11 @@ fn certify_at<S: System, I: CertInterval>(
     } else {
         (newton_point(sys, &x0, 30)?.0, 0.0)
     };
-    let ulps = (-(f64::from(bits) - 8.0)).exp2();
+    // a box a few hundred units in the last place wide: wider than the Newton point's
+    // error and K's rounding, so one Krawczyk step usually proves it
     let scale = xc.iter().map(|v| v.mag()).fold(1.0, f64::max);
-    let radius: Vec<f64> = xc
-        .iter()
-        .map(|v| (2.0 * r_rel).max(ulps * v.mag().max(1.0)))
-        .collect();
+    let ulps = (-(f64::from(bits) - 8.0)).exp2() * scale;
+    let radius: Vec<f64> = xc.iter().map(|_| (2.0 * r_rel).max(ulps)).collect();
     let v = verify_near(sys, &xc, &radius, 1e-3 * scale)?;
     Some(root_of(&v, bits))
 }

@@ -90,9 +90,38 @@ impl System for Circles {
 }
 
 /// The unit sphere `s(u, v) = (cos v cos u, cos v sin u, sin v)` and the line
-/// `p(t) = (1, t, 0)`, tangent to it at `(1, 0, 0)`: unknowns `(t, u, v)`, equations
-/// `p(t) − s(u, v) = 0`, one double root at `(0, 0, 0)`.
-pub struct LineSphere;
+/// `p(t) = o + t·d`: unknowns `(t, u, v)`, equations `p(t) − s(u, v) = 0`.
+pub struct LineSphere {
+    pub origin: [f64; 3],
+    pub dir: [f64; 3],
+}
+
+impl LineSphere {
+    /// `p(t) = (1, t, 0)`, tangent at `(1, 0, 0)`: one double root at `(0, 0, 0)`.
+    pub fn tangent() -> Self {
+        LineSphere {
+            origin: [1.0, 0.0, 0.0],
+            dir: [0.0, 1.0, 0.0],
+        }
+    }
+
+    /// `p(t) = (t, y, z)`, crossing the sphere at `t = ±√(1 − y² − z²)`; the root with
+    /// `t > 0` at [`TRUTH_BITS`]: `(t, atan2(y, t), asin z)`.
+    pub fn crossing(y: f64, z: f64) -> (Self, Vec<Float>) {
+        let p = TRUTH_BITS;
+        let (fy, fz) = (Float::with_val(p, y), Float::with_val(p, z));
+        let t2 =
+            Float::with_val(p, 1) - Float::with_val(p, fy.clone().pow(2u32)) - fz.clone().pow(2u32);
+        let t = Float::with_val(p, t2).sqrt();
+        let u = Float::with_val(p, fy.atan2_ref(&t));
+        let v = Float::with_val(p, fz.asin_ref());
+        let sys = LineSphere {
+            origin: [0.0, y, z],
+            dir: [1.0, 0.0, 0.0],
+        };
+        (sys, vec![t, u, v])
+    }
+}
 
 impl System for LineSphere {
     fn dim(&self) -> usize {
@@ -101,11 +130,10 @@ impl System for LineSphere {
     fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
         let (t, u, v) = (&x[0], &x[1], &x[2]);
         let cv = v.cos();
-        vec![
-            t.one_like() - cv.clone() * u.cos(),
-            t.clone() - cv * u.sin(),
-            -v.sin(),
-        ]
+        let s = [cv.clone() * u.cos(), cv * u.sin(), v.sin()];
+        (0..3)
+            .map(|k| t.lift(self.origin[k]) + t.clone() * &t.lift(self.dir[k]) - &s[k])
+            .collect()
     }
 }
 
