@@ -395,3 +395,90 @@ pub fn no_root<S: System, I: CertInterval>(count: &CountRegion<'_, S, I>, t0: f6
         bound.sup() < 0.0
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Interval;
+
+    /// `x² + c` (one variable): two roots `±√−c`, a double root, or none.
+    struct Parabola(f64);
+    impl System for Parabola {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            vec![x[0].sqr() + x[0].lift(self.0)]
+        }
+    }
+
+    /// `x³`: a triple root, more than the count can bound.
+    struct Cubic;
+    impl System for Cubic {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            vec![x[0].powi(3)]
+        }
+    }
+
+    fn around_zero(r: f64) -> Vec<Interval> {
+        vec![Interval::from_bounds(-r, r)]
+    }
+
+    #[test]
+    fn count_and_exclusion_in_one_variable() {
+        for (c, roots) in [(-1e-20, true), (0.0, true), (1e-20, false)] {
+            let sys = Parabola(c);
+            let local = Local::new(&sys, &[0.0], &[1.0], &[1.0]).unwrap();
+            let count = at_most_two_roots(local, &around_zero(1e-3)).unwrap();
+            assert_eq!(count.curvature_sign, 1.0);
+            assert!(count.covers(&around_zero(1e-3)));
+            assert_eq!(no_root(&count, 0.0), !roots, "c = {c}");
+        }
+        let local = Local::new(&Cubic, &[0.0], &[1.0], &[1.0]).unwrap();
+        assert!(at_most_two_roots(local, &around_zero(1e-3)).is_none());
+    }
+
+    #[test]
+    fn local_coordinates_round_trip() {
+        let sys = Parabola(0.0);
+        let mut local = Local::new(&sys, &[0.0], &[1.0], &[1.0]).unwrap();
+        // a 3-variable shear by hand: m = (1, 2, 3), k = 1, q = (0.5, 1, −2)
+        local.m = vec![1.0, 2.0, 3.0];
+        local.k = 1;
+        local.q = vec![0.5, 1.0, -2.0];
+        let w = [
+            Interval::point(0.25),
+            Interval::point(-0.5),
+            Interval::point(0.125),
+        ];
+        let x = local.to_global(&w);
+        assert_eq!(
+            x,
+            vec![
+                Interval::point(1.3125),
+                Interval::point(2.125),
+                Interval::point(2.25)
+            ]
+        );
+        assert_eq!(local.to_local(&x), w.to_vec());
+    }
+
+    #[test]
+    fn linear_solve_enclosure_contains_the_solutions() {
+        let iv = |m: f64| Interval::from_bounds(m - 0.01, m + 0.01);
+        let a = vec![vec![iv(2.0), iv(1.0)], vec![iv(1.0), iv(3.0)]];
+        let y = crate::certify::level::CertInterval::approx_inverse(&mid_matrix(&a)).unwrap();
+        let c = identity_minus_product(&y, &a);
+        let x = solve_enclosure(&y, &c, &[Interval::point(1.0), Interval::point(2.0)]).unwrap();
+        // the solution for the midpoint matrix, (1/5, 3/5), and for two corner matrices
+        assert!(x[0].contains(0.2) && x[1].contains(0.6));
+        for (a00, a11) in [(2.01, 2.99), (1.99, 3.01)] {
+            let det = a00 * a11 - 1.0;
+            let (s0, s1) = ((a11 - 2.0) / det, (2.0 * a00 - 1.0) / det);
+            assert!(x[0].contains(s0) && x[1].contains(s1));
+        }
+    }
+}
