@@ -14,7 +14,10 @@ use crate::certificate::{Certified, Status};
 use crate::error::GeomError;
 use crate::num::{Interval, MpfrInterval};
 
-/// Certify a root of `sys` near `guess` (module doc). The result is `verified` (a box in
+/// Certify a root of `sys` near `guess` (module doc): the root that f64 Newton from
+/// `guess` converges to, proven in a box of width at most `10⁻³·max(1, |x|)` around
+/// Newton's answer (or, failing that, the cluster tests on a box of radius
+/// `10⁻⁶·max(1, |x|)` around it and the guess). The result is `verified` (a box in
 /// which the root exists and is unique; `max_roots = 1`), `verified_singular` (a box with
 /// at most two roots counted with multiplicity and a double root of a perturbed system),
 /// or `undecided` with the reason (the estimate is then the f64 Newton iterate). It says
