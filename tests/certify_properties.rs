@@ -5,6 +5,9 @@
 //! * a `complete` answer has every true root in the domain inside a reported box;
 //! * `certify_root` from a perturbed guess encloses the true root nearest to it.
 //!
+//! The same properties hold for a line crossing a parametric sphere (a 3×3 system with
+//! trigonometric functions), transversally or nearly tangentially.
+//!
 //! Pairs are generic (random centres and radii), exactly tangent (dyadic data), or
 //! nearly tangent — externally or internally, along an axis or at a random angle — with
 //! a gap `g = 10^-k`, `3 ≤ k ≤ 15`, on either side (two roots, or none).
@@ -15,6 +18,7 @@ use certify_support::*;
 use geocert::certify::{certify_root, solve, Options, Solutions};
 use geocert::{Certified, Status};
 use proptest::prelude::*;
+use rug::ops::Pow;
 use rug::Float;
 
 const DOMAIN: [[f64; 2]; 2] = [[-4.0, 4.0], [-4.0, 4.0]];
@@ -159,5 +163,30 @@ proptest! {
         prop_assert_eq!(r.status, Status::Verified);
         prop_assert!(encloses(&r.value, &truth[0]));
         prop_assert!(!encloses(&r.value, &truth[1]));
+    }
+
+    #[test]
+    fn line_and_sphere(
+        z in -0.3f64..0.3,
+        k in prop_oneof![Just(0i32), 2i32..=14],
+        y0 in 0.15f64..0.9,
+    ) {
+        // p(t) = (t, y, z) with y = y0 (transversal) or y = √(1 − z²) − 10^-k (nearly
+        // tangent): roots t = ±√(1 − y² − z²), u = atan2(y, t), v = asin z
+        let y = if k == 0 { y0 } else { (1.0 - z * z).sqrt() - 10f64.powi(-k) };
+        let (sys, t) = LineSphere::crossing(y, z);
+        let p = TRUTH_BITS;
+        let t2 = Float::with_val(p, 1) - Float::with_val(p, Float::with_val(p, y).pow(2u32))
+            - Float::with_val(p, z).pow(2u32);
+        prop_assume!(t2 > 0);
+        let other = vec![
+            Float::with_val(p, -&t[0]),
+            Float::with_val(p, Float::with_val(p, y).atan2_ref(&Float::with_val(p, -&t[0]))),
+            t[2].clone(),
+        ];
+        let domain = [[-2.0, 2.0], [-3.1, 3.1], [-1.4, 1.4]];
+        let r = solve(&sys, &domain, &Options::default()).unwrap();
+        sound(&r, &[t, other])?;
+        prop_assert!(r.complete, "{:?}", r.value.undecided);
     }
 }
