@@ -1,7 +1,7 @@
 //! The certifier (src/certify, issue 4) on systems with known roots: circles meeting
 //! transversally, tangent, nearly tangent and nearly missing; a line tangent to a
 //! sphere; the 6×6 three-surface system of three spheres; systems defined on half a line.
-//! Every truth is computed in closed form at 300 bits (tests/certify_support).
+//! Every truth is computed in closed form at 1100 bits (tests/certify_support).
 
 mod certify_support;
 
@@ -163,7 +163,7 @@ fn roots_below_f64_resolution_need_mpfr() {
 #[test]
 fn line_tangent_to_sphere() {
     let domain = [[-1.0, 1.0], [-1.0, 1.0], [-1.0, 1.0]];
-    let r = solve(&LineSphere, &domain, &Options::default()).unwrap();
+    let r = solve(&LineSphere::tangent(), &domain, &Options::default()).unwrap();
     eprintln!("{r:#?}");
     assert!(r.complete);
     assert_eq!(r.value.roots.len(), 1);
@@ -213,4 +213,146 @@ fn half_line_systems() {
         .undecided
         .iter()
         .any(|u| in_box(&u.enclosure, &point(&[0.0]))));
+}
+
+#[test]
+fn roots_on_a_bisection_plane_are_reported_once() {
+    // unit circles at (∓1/2, 0) meet at (0, ±√3/2): x = 0 is the domain's first split
+    let c = Circles {
+        a: [-0.5, 0.0],
+        ra2: 1.0,
+        ea: 0.0,
+        b: [0.5, 0.0],
+        rb2: 1.0,
+    };
+    let (truth, _) = c.truth();
+    let r = solve_circles(&c);
+    assert!(r.complete);
+    assert_eq!(r.value.roots.len(), 2);
+    let truth: Vec<Vec<Float>> = truth.iter().map(as_vec).collect();
+    check_against_truth(&r, &truth);
+}
+
+#[test]
+fn line_crossing_a_sphere_twice() {
+    // p(t) = (t, 0.3, 0.2): roots t = ±√0.87, u = atan2(0.3, t), v = asin 0.2
+    let (sys, t) = LineSphere::crossing(0.3, 0.2);
+    let p = TRUTH_BITS;
+    let other = vec![
+        Float::with_val(p, -&t[0]),
+        Float::with_val(
+            p,
+            Float::with_val(p, 0.3).atan2_ref(&Float::with_val(p, -&t[0])),
+        ),
+        t[2].clone(),
+    ];
+    let domain = [[-2.0, 2.0], [-3.0, 3.0], [-1.4, 1.4]];
+    let r = solve(&sys, &domain, &Options::default()).unwrap();
+    eprintln!("line-sphere boxes {}", r.value.boxes);
+    assert!(r.complete);
+    assert_eq!(r.status, Status::Verified);
+    assert_eq!(r.value.roots.len(), 2);
+    check_against_truth(&r, &[t, other]);
+}
+
+#[test]
+fn certify_root_escalates_and_falls_back_to_the_singular_test() {
+    // roots 1.3e-15 apart: f64 intervals cannot separate them, 128 bits can
+    let c = Circles {
+        ea: 2f64.powi(-100),
+        ..Circles::unit_pair(2.0)
+    };
+    let (truth, _) = c.truth();
+    let t1: Vec<f64> = truth[0].iter().map(|v| v.to_f64()).collect();
+    let r = certify_root(&c, &t1, &Options::default()).unwrap();
+    assert_eq!(r.status, Status::Verified);
+    assert!(r.bits >= 128);
+    assert!(encloses(&r.value, &truth[0]) && !encloses(&r.value, &truth[1]));
+    // with the cap at f64 it cannot be proven
+    let capped = Options {
+        max_bits: 53,
+        ..Options::default()
+    };
+    let r = certify_root(&c, &t1, &capped).unwrap();
+    assert_ne!(r.status, Status::Verified);
+    // the tangent line: a double root, verified_singular
+    let r = certify_root(
+        &LineSphere::tangent(),
+        &[1e-9, -2e-9, 1e-9],
+        &Options::default(),
+    )
+    .unwrap();
+    assert_eq!(r.status, Status::VerifiedSingular);
+    assert_eq!(r.value.max_roots, 2);
+    assert!(encloses(&r.value, &point(&[0.0, 0.0, 0.0])));
+    // a near miss: proven to have no root near the estimate, so nothing is certified
+    let r = certify_root(
+        &Circles::unit_pair(2.0 + 1e-9),
+        &[1.0, 0.0],
+        &Options::default(),
+    )
+    .unwrap();
+    assert_eq!(r.status, Status::Undecided);
+    assert!(r.reason.unwrap().contains("no root"));
+}
+
+#[test]
+fn a_spent_budget_is_never_complete() {
+    let c = Circles::unit_pair(1.0);
+    let tight = Options {
+        max_boxes: 10,
+        ..Options::default()
+    };
+    let r = solve(&c, &CIRCLE_DOMAIN, &tight).unwrap();
+    assert!(!r.complete);
+    assert!(r.value.boxes <= 10);
+    assert!(r
+        .value
+        .undecided
+        .iter()
+        .all(|u| u.reason.contains("budget")));
+    // whatever was not found lies in an undecided box
+    let (truth, _) = c.truth();
+    for t in truth.iter().map(as_vec) {
+        let found = r.value.roots.iter().any(|x| encloses(x, &t));
+        let open = r.value.undecided.iter().any(|u| in_box(&u.enclosure, &t));
+        assert!(found || open);
+    }
+}
+
+#[test]
+fn bad_input_is_a_typed_error() {
+    let c = Circles::unit_pair(1.0);
+    let o = Options::default();
+    let e = solve(&c, &[[-1.0, 1.0]], &o).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("count_mismatch", "domain"));
+    let e = solve(&c, &[[-1.0, 1.0], [1.0, -1.0]], &o).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("empty_domain", "domain[1]"));
+    let e = solve(&c, &[[f64::NAN, 1.0], [-1.0, 1.0]], &o).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("non_finite", "domain[0]"));
+    let e = certify_root(&c, &[0.5, f64::INFINITY], &o).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("non_finite", "guess[1]"));
+    let e = certify_root(&c, &[0.5], &o).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("count_mismatch", "guess"));
+    let bad = Options {
+        min_width: -1.0,
+        ..Options::default()
+    };
+    let e = solve(&c, &CIRCLE_DOMAIN, &bad).unwrap_err();
+    assert_eq!(
+        (e.kind(), e.field()),
+        ("invalid_value", "options.min_width")
+    );
+    // a system that returns the wrong number of equations
+    struct Short;
+    impl geocert::certify::System for Short {
+        fn dim(&self) -> usize {
+            2
+        }
+        fn eval<T: geocert::num::Real>(&self, x: &[T]) -> Vec<T> {
+            vec![x[0].clone()]
+        }
+    }
+    let e = solve(&Short, &CIRCLE_DOMAIN, &o).unwrap_err();
+    assert_eq!((e.kind(), e.field()), ("count_mismatch", "system.eval"));
 }

@@ -38,6 +38,7 @@
 use super::boxes::{self, IBox};
 use super::dual::{jet2, Dual};
 use super::guarded::{all_smooth, Guarded};
+use super::krawczyk::smooth_jacobian;
 use super::level::CertInterval;
 use super::linalg::{identity_minus_product, inverse_f64, mat_vec, mid_matrix, norm_inf_upper};
 use super::system::System;
@@ -217,12 +218,7 @@ fn parametric_krawczyk<S: System, I: CertInterval>(
     let bits = w[0].precision_bits();
     let ulps = (-(f64::from(bits) - 4.0)).exp2();
     for _ in 0..6 {
-        let gw: Vec<Guarded<I>> = w.iter().cloned().map(Guarded::new).collect();
-        let (_, jac) = local.eval_with_jacobian(&gw);
-        if !jac.iter().all(|r| all_smooth(r)) {
-            return None;
-        }
-        let jac: Vec<Vec<I>> = jac.into_iter().map(unguard).collect();
+        let (_, jac) = smooth_jacobian(local, &w)?;
         let (a, _) = blocks(&jac);
         let mut c_pt = boxes::midpoint(&w[..n - 1]);
         c_pt.push(w[n - 1].clone());
@@ -345,20 +341,22 @@ pub fn no_root<S: System, I: CertInterval>(count: &CountRegion<'_, S, I>, t0: f6
     let full = |z: &[I]| {
         let mut v = z.to_vec();
         v.push(tp.clone());
-        v.into_iter().map(Guarded::new).collect::<Vec<_>>()
+        v
     };
+    let guard = |v: Vec<I>| v.into_iter().map(Guarded::new).collect::<Vec<_>>();
     for _ in 0..8 {
         if n == 1 {
             break;
         }
-        let (_, jac) = local.eval_with_jacobian(&full(&z));
-        let jac: Vec<Vec<I>> = jac.into_iter().map(unguard).collect();
+        let Some((_, jac)) = smooth_jacobian(local, &full(&z)) else {
+            return false;
+        };
         let (a, _) = blocks(&jac);
         let Some(ya) = I::approx_inverse(&mid_matrix(&a)) else {
             return false;
         };
         let c = boxes::midpoint(&z);
-        let fc = unguard(local.eval(&full(&c)));
+        let fc = unguard(local.eval(&guard(full(&c))));
         let cm = identity_minus_product(&ya, &a);
         let yf = mat_vec(&ya, &fc[..n - 1]);
         let d: Vec<I> = (0..n - 1).map(|i| z[i].clone() - &c[i]).collect();
@@ -369,12 +367,9 @@ pub fn no_root<S: System, I: CertInterval>(count: &CountRegion<'_, S, I>, t0: f6
             None => return false,
         }
     }
-    let (g, jac) = local.eval_with_jacobian(&full(&z));
-    if !all_smooth(&g) || !jac.iter().all(|r| all_smooth(r)) {
+    let Some((g, jac)) = smooth_jacobian(local, &full(&z)) else {
         return false;
-    }
-    let g = unguard(g);
-    let jac: Vec<Vec<I>> = jac.into_iter().map(unguard).collect();
+    };
     let (a, gt) = blocks(&jac);
     let mut phi1 = jac[n - 1][n - 1].clone();
     if n > 1 {
@@ -398,5 +393,92 @@ pub fn no_root<S: System, I: CertInterval>(count: &CountRegion<'_, S, I>, t0: f6
         bound.inf() > 0.0
     } else {
         bound.sup() < 0.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Interval;
+
+    /// `x² + c` (one variable): two roots `±√−c`, a double root, or none.
+    struct Parabola(f64);
+    impl System for Parabola {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            vec![x[0].sqr() + x[0].lift(self.0)]
+        }
+    }
+
+    /// `x³`: a triple root, more than the count can bound.
+    struct Cubic;
+    impl System for Cubic {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            vec![x[0].powi(3)]
+        }
+    }
+
+    fn around_zero(r: f64) -> Vec<Interval> {
+        vec![Interval::from_bounds(-r, r)]
+    }
+
+    #[test]
+    fn count_and_exclusion_in_one_variable() {
+        for (c, roots) in [(-1e-20, true), (0.0, true), (1e-20, false)] {
+            let sys = Parabola(c);
+            let local = Local::new(&sys, &[0.0], &[1.0], &[1.0]).unwrap();
+            let count = at_most_two_roots(local, &around_zero(1e-3)).unwrap();
+            assert_eq!(count.curvature_sign, 1.0);
+            assert!(count.covers(&around_zero(1e-3)));
+            assert_eq!(no_root(&count, 0.0), !roots, "c = {c}");
+        }
+        let local = Local::new(&Cubic, &[0.0], &[1.0], &[1.0]).unwrap();
+        assert!(at_most_two_roots(local, &around_zero(1e-3)).is_none());
+    }
+
+    #[test]
+    fn local_coordinates_round_trip() {
+        let sys = Parabola(0.0);
+        let mut local = Local::new(&sys, &[0.0], &[1.0], &[1.0]).unwrap();
+        // a 3-variable shear by hand: m = (1, 2, 3), k = 1, q = (0.5, 1, −2)
+        local.m = vec![1.0, 2.0, 3.0];
+        local.k = 1;
+        local.q = vec![0.5, 1.0, -2.0];
+        let w = [
+            Interval::point(0.25),
+            Interval::point(-0.5),
+            Interval::point(0.125),
+        ];
+        let x = local.to_global(&w);
+        assert_eq!(
+            x,
+            vec![
+                Interval::point(1.3125),
+                Interval::point(2.125),
+                Interval::point(2.25)
+            ]
+        );
+        assert_eq!(local.to_local(&x), w.to_vec());
+    }
+
+    #[test]
+    fn linear_solve_enclosure_contains_the_solutions() {
+        let iv = |m: f64| Interval::from_bounds(m - 0.01, m + 0.01);
+        let a = vec![vec![iv(2.0), iv(1.0)], vec![iv(1.0), iv(3.0)]];
+        let y = crate::certify::level::CertInterval::approx_inverse(&mid_matrix(&a)).unwrap();
+        let c = identity_minus_product(&y, &a);
+        let x = solve_enclosure(&y, &c, &[Interval::point(1.0), Interval::point(2.0)]).unwrap();
+        // the solution for the midpoint matrix, (1/5, 3/5), and for two corner matrices
+        assert!(x[0].contains(0.2) && x[1].contains(0.6));
+        for (a00, a11) in [(2.01, 2.99), (1.99, 3.01)] {
+            let det = a00 * a11 - 1.0;
+            let (s0, s1) = ((a11 - 2.0) / det, (2.0 * a00 - 1.0) / det);
+            assert!(x[0].contains(s0) && x[1].contains(s1));
+        }
     }
 }

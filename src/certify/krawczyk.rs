@@ -47,32 +47,54 @@ pub fn excluded_by_image<I: IntervalLike>(values: &[I], n: usize) -> bool {
     values.len() == n && values.iter().any(|v| v.is_empty() || !v.contains_zero())
 }
 
-/// One Krawczyk step on the box `x` (module doc).
-pub fn krawczyk<S: System, I: CertInterval>(sys: &S, x: &[I]) -> Krawczyk<I> {
+/// `F(X)` and `J(X)` if `F` is proven `C^∞` on the box `x` — every value and every
+/// derivative entry computed by smooth operations (a value may be non-smooth where its
+/// derivative formula is not, as `atan2` across its branch cut) — and the shapes are
+/// square; else `None`.
+pub fn smooth_jacobian<S: System, I: IntervalLike>(
+    sys: &S,
+    x: &[I],
+) -> Option<(Vec<I>, Vec<Vec<I>>)> {
     let n = x.len();
     let gx: Vec<Guarded<I>> = x.iter().cloned().map(Guarded::new).collect();
-    let (_, jac) = sys.eval_with_jacobian(&gx);
-    let square = jac.len() == n && jac.iter().all(|r| r.len() == n);
-    if !square || !jac.iter().all(|r| all_smooth(r)) {
+    let (values, jac) = sys.eval_with_jacobian(&gx);
+    let square = values.len() == n && jac.len() == n && jac.iter().all(|r| r.len() == n);
+    if !square || !all_smooth(&values) || !jac.iter().all(|r| all_smooth(r)) {
+        return None;
+    }
+    let unguard = |v: Vec<Guarded<I>>| v.into_iter().map(|g| g.value).collect::<Vec<I>>();
+    Some((unguard(values), jac.into_iter().map(unguard).collect()))
+}
+
+/// One Krawczyk step on the box `x` (module doc), about its midpoint.
+pub fn krawczyk<S: System, I: CertInterval>(sys: &S, x: &[I]) -> Krawczyk<I> {
+    krawczyk_about(sys, x, &boxes::midpoint(x))
+}
+
+/// One Krawczyk step on the box `x` about the point `m ∈ x` (any point of the box will
+/// do: the mean value theorem is applied on segments from `m`, which stay in the box).
+/// A fixed `m` over several steps avoids the jitter that re-rounding `F` at a moving
+/// midpoint adds when `F(m)`'s rounding dominates `K(X)`. `Inconclusive` if `m ∉ x`.
+pub fn krawczyk_about<S: System, I: CertInterval>(sys: &S, x: &[I], m: &[I]) -> Krawczyk<I> {
+    let n = x.len();
+    if !boxes::is_subset(m, x) {
         return Krawczyk::Inconclusive;
     }
-    let m = boxes::midpoint(x);
+    let Some((_, j)) = smooth_jacobian(sys, x) else {
+        return Krawczyk::Inconclusive;
+    };
     let gm: Vec<Guarded<I>> = m.iter().cloned().map(Guarded::new).collect();
     let fm = sys.eval(&gm);
     if fm.len() != n || !all_smooth(&fm) {
         return Krawczyk::Inconclusive;
     }
-    let j: Vec<Vec<I>> = jac
-        .into_iter()
-        .map(|r| r.into_iter().map(|g| g.value).collect())
-        .collect();
     let Some(y) = I::approx_inverse(&mid_matrix(&j)) else {
         return Krawczyk::Inconclusive;
     };
     let c = identity_minus_product(&y, &j);
     let fm: Vec<I> = fm.into_iter().map(|g| g.value).collect();
     let yf = mat_vec(&y, &fm);
-    let d: Vec<I> = x.iter().zip(&m).map(|(a, b)| a.clone() - b).collect();
+    let d: Vec<I> = x.iter().zip(m).map(|(a, b)| a.clone() - b).collect();
     let cd = mat_vec(&c, &d);
     let k: IBox<I> = (0..n).map(|i| m[i].clone() - &yf[i] + &cd[i]).collect();
     if k.iter().any(|v| v.is_empty()) {
@@ -97,6 +119,13 @@ pub struct VerifiedRoot<I> {
 /// Narrow the enclosure of the unique root of `region` by iterating `E ← E ∩ K(E)` (every
 /// `K(E)` contains the root, since it lies in `E`).
 pub fn tighten<S: System, I: CertInterval>(sys: &S, mut e: IBox<I>, steps: usize) -> IBox<I> {
+    // already within a few units in the last place of the box's scale: nothing to gain
+    let bits = e.first().map_or(53, |v| v.precision_bits());
+    let scale = e.iter().map(|v| v.mag()).fold(1.0, f64::max);
+    let ulps = (-(f64::from(bits) - 4.0)).exp2() * scale;
+    if e.iter().all(|v| v.wid() <= ulps) {
+        return e;
+    }
     for _ in 0..steps {
         let before: f64 = boxes::widths(&e).into_iter().fold(0.0, f64::max);
         let k = match krawczyk(sys, &e) {
@@ -115,10 +144,11 @@ pub fn tighten<S: System, I: CertInterval>(sys: &S, mut e: IBox<I>, steps: usize
     e
 }
 
-/// Prove a root near the point `center` by Krawczyk with epsilon-inflation (Rump 1983):
-/// start from `center ± radius`, and after each failed step continue with `K(X)` grown by
-/// a tenth of its width plus a few units in the last place. Gives up when a side would
-/// exceed `max_width`, or after a few steps.
+/// Prove a root near the point `center` by Krawczyk about `center` with
+/// epsilon-inflation (Rump 1983): start from `center ± radius`, and after each failed
+/// step continue with the hull of `center` and `K(X)` grown by a tenth of its width plus
+/// a few units in the last place. Gives up when a side would exceed `max_width`, or after
+/// a few steps.
 pub fn verify_near<S: System, I: CertInterval>(
     sys: &S,
     center: &[I],
@@ -139,7 +169,7 @@ pub fn verify_near<S: System, I: CertInterval>(
         {
             return None;
         }
-        match krawczyk(sys, &x) {
+        match krawczyk_about(sys, &x, center) {
             Krawczyk::Unique(k) => {
                 let enclosure = tighten(sys, k, 4);
                 return Some(VerifiedRoot {
@@ -147,7 +177,9 @@ pub fn verify_near<S: System, I: CertInterval>(
                     enclosure,
                 });
             }
-            Krawczyk::Image(k) => x = boxes::inflate_scaled(&k, 0.1, ulps),
+            Krawczyk::Image(k) => {
+                x = boxes::hull(&boxes::inflate_scaled(&k, 0.1, ulps), center);
+            }
             Krawczyk::Inconclusive => return None,
         }
     }
@@ -234,5 +266,34 @@ mod tests {
         // where √ is undefined the image is empty: no root, soundly
         assert!(excluded_by_image(&image(&Root, &b(&[(-2.0, -1.0)])), 1));
         assert!(!excluded_by_image(&image(&Root, &b(&[(-2.0, 1.0)])), 1));
+    }
+
+    /// atan2(x, −1) − (π − 1/20): the value jumps by 2π where x crosses 0 (the branch
+    /// cut) while the derivative formula −1/(1 + x²) does not see it.
+    struct AcrossTheCut;
+    impl System for AcrossTheCut {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            let pi = x[0].pi_like();
+            vec![x[0].atan2(&x[0].lift(-1.0)) - pi + &x[0].lift(0.05)]
+        }
+    }
+
+    #[test]
+    fn a_discontinuity_is_not_smooth() {
+        assert!(matches!(
+            krawczyk(&AcrossTheCut, &b(&[(-0.1, 0.1)])),
+            Krawczyk::Inconclusive
+        ));
+        // right of the cut the root tan(0.05) is proven (0.05 the double, taken as exact)
+        let Krawczyk::Unique(k) = krawczyk(&AcrossTheCut, &b(&[(0.01, 0.1)])) else {
+            panic!("expected a proof")
+        };
+        let truth = rug::Float::with_val(200, 0.05f64).tan();
+        let e = tighten(&AcrossTheCut, k, 6);
+        assert!(MpfrInterval::from_interval(&e[0], 200).contains_float(&truth));
+        assert!(e[0].width() < 1e-15);
     }
 }

@@ -51,7 +51,7 @@ pub mod subdivide;
 pub mod system;
 pub mod univariate;
 
-pub use root::certify_root;
+pub use root::{certify_root, certify_root_at};
 pub use solve::solve;
 pub use system::System;
 

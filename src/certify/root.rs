@@ -14,7 +14,10 @@ use crate::certificate::{Certified, Status};
 use crate::error::GeomError;
 use crate::num::{Interval, MpfrInterval};
 
-/// Certify a root of `sys` near `guess` (module doc). The result is `verified` (a box in
+/// Certify a root of `sys` near `guess` (module doc): the root that f64 Newton from
+/// `guess` converges to, proven in a box of width at most `10⁻³·max(1, |x|)` around
+/// Newton's answer (or, failing that, the cluster tests on a box of radius
+/// `10⁻⁶·max(1, |x|)` around it and the guess). The result is `verified` (a box in
 /// which the root exists and is unique; `max_roots = 1`), `verified_singular` (a box with
 /// at most two roots counted with multiplicity and a double root of a perturbed system),
 /// or `undecided` with the reason (the estimate is then the f64 Newton iterate). It says
@@ -74,6 +77,24 @@ pub fn certify_root<S: System>(
     Ok(undecided(&x, reason))
 }
 
+/// One escalation level of [`certify_root`]: certify the root near the point `x` with
+/// Krawczyk at `bits` bits only (53: f64 intervals; more: MPFR, after Newton at that
+/// precision), without the singular test; `Ok(None)` if that precision does not prove it.
+/// Errors as [`certify_root`].
+pub fn certify_root_at<S: System>(
+    sys: &S,
+    x: &[f64],
+    bits: u32,
+) -> Result<Option<Root>, GeomError> {
+    check_point("guess", x, sys.dim())?;
+    check_system(sys, x)?;
+    Ok(if bits <= 53 {
+        certify_at::<S, Interval>(sys, x, 0.0, 53)
+    } else {
+        certify_at::<S, MpfrInterval>(sys, x, 0.0, bits)
+    })
+}
+
 /// Certify the root near `x` at one precision: refine by Newton at that precision, then
 /// Krawczyk with epsilon-inflation from a box of the refined point's expected accuracy.
 fn certify_at<S: System, I: CertInterval>(
@@ -91,12 +112,11 @@ fn certify_at<S: System, I: CertInterval>(
     } else {
         (newton_point(sys, &x0, 30)?.0, 0.0)
     };
-    let ulps = (-(f64::from(bits) - 8.0)).exp2();
+    // a box a few hundred units in the last place wide: wider than the Newton point's
+    // error and K's rounding, so one Krawczyk step usually proves it
     let scale = xc.iter().map(|v| v.mag()).fold(1.0, f64::max);
-    let radius: Vec<f64> = xc
-        .iter()
-        .map(|v| (2.0 * r_rel).max(ulps * v.mag().max(1.0)))
-        .collect();
+    let ulps = (-(f64::from(bits) - 8.0)).exp2() * scale;
+    let radius: Vec<f64> = xc.iter().map(|_| (2.0 * r_rel).max(ulps)).collect();
     let v = verify_near(sys, &xc, &radius, 1e-3 * scale)?;
     Some(root_of(&v, bits))
 }

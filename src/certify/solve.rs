@@ -263,7 +263,8 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
             let bits = ledger.levels[l];
             match cluster_at(sys, &hull, bits) {
                 Some(Decision::NoRoot) => {
-                    ledger.exclude(boxes::volume(&hull), bits);
+                    let undecided: f64 = cluster.iter().map(|x| boxes::volume(x)).sum();
+                    ledger.exclude(undecided, bits);
                     decided = true;
                 }
                 Some(Decision::TwoRoots(roots)) => {

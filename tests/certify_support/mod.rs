@@ -1,5 +1,5 @@
 //! Systems with known roots for the certifier's tests, and their roots computed
-//! independently in closed form with 300-bit MPFR (never by the code under test).
+//! independently in closed form with 1100-bit MPFR (never by the code under test).
 
 #![allow(dead_code)]
 
@@ -8,8 +8,9 @@ use geocert::num::{MpfrInterval, Real};
 use rug::ops::Pow;
 use rug::Float;
 
-/// The precision of the reference roots.
-pub const TRUTH_BITS: u32 = 300;
+/// The precision of the reference roots: beyond twice the highest precision a proof
+/// uses, so a truth is far narrower than any enclosure it is tested against.
+pub const TRUTH_BITS: u32 = 1100;
 
 /// Two circles `|x − a|² = ra2 + ea`, `|x − b|² = rb2`, each constant a double (the
 /// perturbation `ea` is kept apart so that `1 + 2⁻¹⁰⁰` can be written exactly).
@@ -34,7 +35,7 @@ impl Circles {
         }
     }
 
-    /// The intersection points in closed form at 300 bits: with `d = |b − a|`,
+    /// The intersection points in closed form at [`TRUTH_BITS`]: with `d = |b − a|`,
     /// `ℓ = (ra² − rb² + d²)/(2d)` along `b − a` and `h² = ra² − ℓ²` across. Returns the
     /// points and `h²` (negative: no root; zero: a double root).
     pub fn truth(&self) -> (Vec<[Float; 2]>, Float) {
@@ -89,9 +90,38 @@ impl System for Circles {
 }
 
 /// The unit sphere `s(u, v) = (cos v cos u, cos v sin u, sin v)` and the line
-/// `p(t) = (1, t, 0)`, tangent to it at `(1, 0, 0)`: unknowns `(t, u, v)`, equations
-/// `p(t) − s(u, v) = 0`, one double root at `(0, 0, 0)`.
-pub struct LineSphere;
+/// `p(t) = o + t·d`: unknowns `(t, u, v)`, equations `p(t) − s(u, v) = 0`.
+pub struct LineSphere {
+    pub origin: [f64; 3],
+    pub dir: [f64; 3],
+}
+
+impl LineSphere {
+    /// `p(t) = (1, t, 0)`, tangent at `(1, 0, 0)`: one double root at `(0, 0, 0)`.
+    pub fn tangent() -> Self {
+        LineSphere {
+            origin: [1.0, 0.0, 0.0],
+            dir: [0.0, 1.0, 0.0],
+        }
+    }
+
+    /// `p(t) = (t, y, z)`, crossing the sphere at `t = ±√(1 − y² − z²)`; the root with
+    /// `t > 0` at [`TRUTH_BITS`]: `(t, atan2(y, t), asin z)`.
+    pub fn crossing(y: f64, z: f64) -> (Self, Vec<Float>) {
+        let p = TRUTH_BITS;
+        let (fy, fz) = (Float::with_val(p, y), Float::with_val(p, z));
+        let t2 =
+            Float::with_val(p, 1) - Float::with_val(p, fy.clone().pow(2u32)) - fz.clone().pow(2u32);
+        let t = Float::with_val(p, t2).sqrt();
+        let u = Float::with_val(p, fy.atan2_ref(&t));
+        let v = Float::with_val(p, fz.asin_ref());
+        let sys = LineSphere {
+            origin: [0.0, y, z],
+            dir: [1.0, 0.0, 0.0],
+        };
+        (sys, vec![t, u, v])
+    }
+}
 
 impl System for LineSphere {
     fn dim(&self) -> usize {
@@ -100,11 +130,10 @@ impl System for LineSphere {
     fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
         let (t, u, v) = (&x[0], &x[1], &x[2]);
         let cv = v.cos();
-        vec![
-            t.one_like() - cv.clone() * u.cos(),
-            t.clone() - cv * u.sin(),
-            -v.sin(),
-        ]
+        let s = [cv.clone() * u.cos(), cv * u.sin(), v.sin()];
+        (0..3)
+            .map(|k| t.lift(self.origin[k]) + t.clone() * &t.lift(self.dir[k]) - &s[k])
+            .collect()
     }
 }
 
@@ -146,7 +175,7 @@ impl System for ThreeSpheres {
 
 impl ThreeSpheres {
     /// Unit spheres at the origin, `(1, 0, 0)` and `(0, 1, 0)`: they meet at
-    /// `(1/2, 1/2, ±1/√2)`. The parameters of the upper point on each sphere at 300 bits:
+    /// `(1/2, 1/2, ±1/√2)`. The parameters of the upper point on each sphere at [`TRUTH_BITS`]:
     /// `u = atan2(d_y, d_x)`, `v = asin(d_z)` for the unit direction `d = p − c`.
     pub fn unit_triple() -> (Self, Vec<Float>) {
         let sys = ThreeSpheres {
@@ -181,7 +210,7 @@ impl System for SqrtMinus {
     }
 }
 
-/// True if the 300-bit point lies in the root's exact (MPFR) enclosure.
+/// True if the 1100-bit point lies in the root's exact (MPFR) enclosure.
 pub fn encloses(root: &Root, point: &[Float]) -> bool {
     root.enclosure_mpfr
         .iter()
@@ -199,14 +228,14 @@ pub fn count_inside(root: &Root, points: &[Vec<Float>]) -> usize {
     points.iter().filter(|p| encloses(root, p)).count()
 }
 
-/// True if the 300-bit point lies in the f64 box.
+/// True if the 1100-bit point lies in the f64 box.
 pub fn in_box(bx: &[geocert::num::Interval], point: &[Float]) -> bool {
     bx.iter()
         .zip(point)
         .all(|(iv, x)| MpfrInterval::from_interval(iv, 53).contains_float(x))
 }
 
-/// A 300-bit point from doubles.
+/// A 1100-bit point from doubles.
 pub fn point(x: &[f64]) -> Vec<Float> {
     x.iter().map(|&v| Float::with_val(TRUTH_BITS, v)).collect()
 }
