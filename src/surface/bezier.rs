@@ -1,0 +1,59 @@
+//! Tensor-product (rational) Bézier patch of OPERATIONS.md §1.6 (1.18) with the
+//! Bernstein basis, on `[0, 1]²` (CASES `bezier_surface`): net row `i` ↔ `v`, position
+//! `j` in the row ↔ `u`.
+
+use super::basis::bernstein_jet;
+use super::nurbs::validate_net;
+use super::tensor::{tensor_jet, Net};
+use super::Surface;
+use crate::error::GeomError;
+use crate::num::Real;
+
+/// A Bézier patch of degree `cols − 1` in `u` and `rows − 1` in `v`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BezierSurface {
+    pub(crate) net: Net,
+}
+
+impl BezierSurface {
+    /// The patch over `points[i][j]` (at least 2 × 2, rectangular) with optional positive
+    /// `weights` of the same shape (errors name `points[i]`, `points[i][j]`,
+    /// `weights[i][j]`).
+    pub fn new(
+        points: &[Vec<[f64; 3]>],
+        weights: Option<&[Vec<f64>]>,
+    ) -> Result<BezierSurface, GeomError> {
+        let net = validate_net(points, weights, 2, 2)?;
+        Ok(BezierSurface { net })
+    }
+
+    /// `(degree in u, degree in v)`.
+    pub fn degrees(&self) -> (usize, usize) {
+        (self.net.cols - 1, self.net.rows - 1)
+    }
+    /// The control points, row by row.
+    pub fn points(&self) -> Vec<Vec<[f64; 3]>> {
+        self.net
+            .points
+            .chunks(self.net.cols)
+            .map(<[_]>::to_vec)
+            .collect()
+    }
+    /// The weights, row by row, if rational.
+    pub fn weights(&self) -> Option<Vec<Vec<f64>>> {
+        let w = self.net.weights.as_ref()?;
+        Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
+    }
+}
+
+impl Surface for BezierSurface {
+    fn domain(&self) -> ([f64; 2], [f64; 2]) {
+        ([0.0, 1.0], [0.0, 1.0])
+    }
+    fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
+        let (du, dv) = self.degrees();
+        let bu = bernstein_jet(du, u, order);
+        let bv = bernstein_jet(dv, v, order);
+        tensor_jet(&self.net, &bu, 0, &bv, 0, order)
+    }
+}

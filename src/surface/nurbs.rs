@@ -1,0 +1,203 @@
+//! NURBS patch of OPERATIONS.md §1.6 (1.18) (CASES `nurbs_surface`): degrees `p` (in
+//! `u`) and `q` (in `v`), full knot vectors (`cols + p + 1` and `rows + q + 1` knots),
+//! net row `i` ↔ `v`, position `j` ↔ `u`, optional positive weights. Domain
+//! `[knots_u[p], knots_u[cols]] × [knots_v[q], knots_v[rows]]` (0-based).
+//!
+//! An interval parameter that straddles knots is evaluated on every span it touches and
+//! the results are joined ([`super::basis::hull`]), so the jet encloses the surface over
+//! the whole box; a parameter exactly on a knot takes the right span, as f64 does.
+
+use super::basis::{bspline_jet, hull, spans_touching, BasisJet};
+use super::tensor::{tensor_jet, Net};
+use super::validate::{degree, knot_vector, positive};
+use super::Surface;
+use crate::error::{require_finite_all, GeomError};
+use crate::num::Real;
+
+/// A validated NURBS patch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsSurface {
+    pub(crate) degrees: [usize; 2],
+    pub(crate) knots: [Vec<f64>; 2],
+    pub(crate) net: Net,
+    domain: ([f64; 2], [f64; 2]),
+}
+
+/// Check a rectangular net of at least `min_rows × min_cols` finite points and its
+/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`).
+pub(crate) fn validate_net(
+    points: &[Vec<[f64; 3]>],
+    weights: Option<&[Vec<f64>]>,
+    min_rows: usize,
+    min_cols: usize,
+) -> Result<Net, GeomError> {
+    let rows = points.len();
+    if rows < min_rows {
+        return Err(GeomError::CountMismatch {
+            field: "points".into(),
+            expected: format!("at least {min_rows} rows"),
+            found: format!("{rows}"),
+        });
+    }
+    let cols = points[0].len();
+    if cols < min_cols {
+        return Err(GeomError::CountMismatch {
+            field: "points[0]".into(),
+            expected: format!("at least {min_cols} points per row"),
+            found: format!("{cols}"),
+        });
+    }
+    let mut flat = Vec::with_capacity(rows * cols);
+    for (i, r) in points.iter().enumerate() {
+        if r.len() != cols {
+            return Err(GeomError::CountMismatch {
+                field: format!("points[{i}]"),
+                expected: format!("{cols} points (as row 0)"),
+                found: format!("{}", r.len()),
+            });
+        }
+        for (j, p) in r.iter().enumerate() {
+            require_finite_all(&format!("points[{i}][{j}]"), p)?;
+            flat.push(*p);
+        }
+    }
+    let weights = match weights {
+        None => None,
+        Some(w) => {
+            if w.len() != rows {
+                return Err(GeomError::CountMismatch {
+                    field: "weights".into(),
+                    expected: format!("{rows} rows (as points)"),
+                    found: format!("{}", w.len()),
+                });
+            }
+            let mut flat_w = Vec::with_capacity(rows * cols);
+            for (i, r) in w.iter().enumerate() {
+                if r.len() != cols {
+                    return Err(GeomError::CountMismatch {
+                        field: format!("weights[{i}]"),
+                        expected: format!("{cols} weights (as points[{i}])"),
+                        found: format!("{}", r.len()),
+                    });
+                }
+                for (j, &x) in r.iter().enumerate() {
+                    let field = format!("weights[{i}][{j}]");
+                    positive(&field, x).map_err(|e| match e {
+                        GeomError::InvalidValue { field, .. } => GeomError::NonPositiveWeight {
+                            field,
+                            value: format!("{x}"),
+                        },
+                        other => other,
+                    })?;
+                    flat_w.push(x);
+                }
+            }
+            Some(flat_w)
+        }
+    };
+    Ok(Net {
+        rows,
+        cols,
+        points: flat,
+        weights,
+    })
+}
+
+impl NurbsSurface {
+    /// A NURBS patch; errors name `degree_u`, `degree_v`, `knots_u`, `knots_v`
+    /// (length, order, multiplicity, empty domain), `points` and `weights`.
+    pub fn new(
+        [degree_u, degree_v]: [usize; 2],
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        points: &[Vec<[f64; 3]>],
+        weights: Option<&[Vec<f64>]>,
+    ) -> Result<NurbsSurface, GeomError> {
+        let p = degree("degree_u", degree_u)?;
+        let q = degree("degree_v", degree_v)?;
+        let net = validate_net(points, weights, q + 1, p + 1)?;
+        let du = knot_vector("knots_u", &knots_u, net.cols, p)?;
+        let dv = knot_vector("knots_v", &knots_v, net.rows, q)?;
+        Ok(NurbsSurface {
+            degrees: [p, q],
+            knots: [knots_u, knots_v],
+            net,
+            domain: (du, dv),
+        })
+    }
+
+    /// `[degree in u, degree in v]`.
+    pub fn degrees(&self) -> [usize; 2] {
+        self.degrees
+    }
+    /// `[knots_u, knots_v]`.
+    pub fn knots(&self) -> &[Vec<f64>; 2] {
+        &self.knots
+    }
+    /// The control points, row by row.
+    pub fn points(&self) -> Vec<Vec<[f64; 3]>> {
+        self.net
+            .points
+            .chunks(self.net.cols)
+            .map(<[_]>::to_vec)
+            .collect()
+    }
+    /// The weights, row by row, if rational.
+    pub fn weights(&self) -> Option<Vec<Vec<f64>>> {
+        let w = self.net.weights.as_ref()?;
+        Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
+    }
+
+    /// The basis jets on every span that `t` touches in `direction`.
+    fn basis<T: Real>(&self, direction: usize, t: &T, order: usize) -> Vec<(usize, BasisJet<T>)> {
+        let p = self.degrees[direction];
+        let n = if direction == 0 {
+            self.net.cols
+        } else {
+            self.net.rows
+        };
+        let knots = &self.knots[direction];
+        spans_touching(knots, p, n, t.bounds())
+            .into_iter()
+            .map(|s| (s - p, bspline_jet(knots, p, s, t, order)))
+            .collect()
+    }
+}
+
+impl Surface for NurbsSurface {
+    fn domain(&self) -> ([f64; 2], [f64; 2]) {
+        self.domain
+    }
+
+    fn knot_span(&self, direction: usize, t: f64) -> Option<(f64, f64)> {
+        let p = self.degrees[direction];
+        let n = if direction == 0 {
+            self.net.cols
+        } else {
+            self.net.rows
+        };
+        let knots = &self.knots[direction];
+        let s = super::basis::find_span(knots, p, n, t);
+        Some((knots[s], knots[s + 1]))
+    }
+
+    fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
+        let bu = self.basis(0, u, order);
+        let bv = self.basis(1, v, order);
+        let mut result: Option<Vec<[T; 3]>> = None;
+        for (first_v, jv) in &bv {
+            for (first_u, ju) in &bu {
+                let jet = tensor_jet(&self.net, ju, *first_u, jv, *first_v, order);
+                result = Some(match result {
+                    None => jet,
+                    Some(acc) => acc
+                        .iter()
+                        .zip(&jet)
+                        .map(|(a, b)| std::array::from_fn(|c| hull(&a[c], &b[c])))
+                        .collect(),
+                });
+            }
+        }
+        result.expect("at least one span")
+    }
+}
