@@ -82,3 +82,57 @@ fn analytic_derivatives_match_mpfr_central_differences() {
     zoo(&mut v);
     assert!(v.checked >= 20 * 40);
 }
+
+#[test]
+fn implicit_gradients_and_hessians_match_central_differences() {
+    use geocert::surface::implicit::ImplicitQuadric;
+    use geocert::surface::{AnyImplicit, Implicit};
+    let mut forms: Vec<(String, AnyImplicit)> = surface_support::any_surfaces()
+        .into_iter()
+        .filter_map(|(name, s)| s.implicit().map(|f| (name.to_string(), f)))
+        .collect();
+    let q = [
+        [1.0, 0.5, -0.25, 1.0],
+        [0.5, -2.0, 0.75, 0.0],
+        [-0.25, 0.75, 3.0, -1.5],
+        [1.0, 0.0, -1.5, -4.0],
+    ];
+    forms.push((
+        "quadric".into(),
+        AnyImplicit::Quadric(ImplicitQuadric::new(q).unwrap()),
+    ));
+    assert!(forms.len() >= 12);
+    let mut rng = Rng(404);
+    for (name, f) in &forms {
+        for _ in 0..30 {
+            let x: [f64; 3] = std::array::from_fn(|_| rng.range(-3.0, 3.0));
+            let mx = x.map(m);
+            let jet = f.implicit_jet(&mx, 2);
+            let (g, hess) = (jet.gradient.unwrap(), jet.hessian.unwrap());
+            let scale = 1.0 + jet.value.mag() + g.iter().map(|x| x.mag()).fold(0.0, f64::max);
+            for i in 0..3 {
+                let shifted = |sign: f64| {
+                    let mut y = mx.clone();
+                    y[i] = y[i].clone() + m(sign * H);
+                    f.implicit_jet(&y, 1)
+                };
+                let (p, q) = (shifted(1.0), shifted(-1.0));
+                let two_h = m(2.0 * H);
+                let dv = (p.value.clone() - q.value.clone()) / two_h.clone();
+                assert!(
+                    (dv - g[i].clone()).mag() <= 1e-24 * scale,
+                    "{name}: ∂F/∂x{i}"
+                );
+                let (pg, qg) = (p.gradient.unwrap(), q.gradient.unwrap());
+                for j in 0..3 {
+                    let d = (pg[j].clone() - qg[j].clone()) / two_h.clone();
+                    assert!(
+                        (d - hess[j][i].clone()).mag() <= 1e-24 * scale,
+                        "{name}: H[{j}][{i}]"
+                    );
+                }
+            }
+            assert!(f.implicit_jet(&x, 0).gradient.is_none());
+        }
+    }
+}
