@@ -7,6 +7,7 @@ mod linear_out;
 pub mod number;
 pub mod objects;
 pub mod result;
+pub mod shapes;
 mod solve;
 mod verify;
 

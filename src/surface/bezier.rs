@@ -5,6 +5,7 @@
 use super::basis::bernstein_jet;
 use super::nurbs::validate_net;
 use super::tensor::{tensor_jet, Net};
+use super::validate::{restrict_domain, Domain};
 use super::Surface;
 use crate::error::GeomError;
 use crate::num::Real;
@@ -13,6 +14,7 @@ use crate::num::Real;
 #[derive(Debug, Clone, PartialEq)]
 pub struct BezierSurface {
     pub(crate) net: Net,
+    domain: Domain,
 }
 
 impl BezierSurface {
@@ -24,7 +26,16 @@ impl BezierSurface {
         weights: Option<&[Vec<f64>]>,
     ) -> Result<BezierSurface, GeomError> {
         let net = validate_net(points, weights, 2, 2)?;
-        Ok(BezierSurface { net })
+        Ok(BezierSurface {
+            net,
+            domain: ([0.0, 1.0], [0.0, 1.0]),
+        })
+    }
+
+    /// The same patch on a sub-rectangle of `[0, 1]²`.
+    pub fn with_domain(mut self, domain: Domain) -> Result<BezierSurface, GeomError> {
+        self.domain = restrict_domain(self.domain, Some(domain))?;
+        Ok(self)
     }
 
     /// `(degree in u, degree in v)`.
@@ -48,7 +59,7 @@ impl BezierSurface {
 
 impl Surface for BezierSurface {
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
-        ([0.0, 1.0], [0.0, 1.0])
+        self.domain
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let (du, dv) = self.degrees();

@@ -9,7 +9,7 @@
 
 use super::basis::{bspline_jet, hull, spans_touching, BasisJet};
 use super::tensor::{tensor_jet, Net};
-use super::validate::{degree, knot_vector, positive};
+use super::validate::{degree, knot_vector, positive, restrict_domain, Domain};
 use super::Surface;
 use crate::error::{require_finite_all, GeomError};
 use crate::num::Real;
@@ -20,7 +20,7 @@ pub struct NurbsSurface {
     pub(crate) degrees: [usize; 2],
     pub(crate) knots: [Vec<f64>; 2],
     pub(crate) net: Net,
-    domain: ([f64; 2], [f64; 2]),
+    domain: Domain,
 }
 
 /// Check a rectangular net of at least `min_rows × min_cols` finite points and its
@@ -124,6 +124,12 @@ impl NurbsSurface {
             net,
             domain: (du, dv),
         })
+    }
+
+    /// The same patch on a sub-rectangle of its domain.
+    pub fn with_domain(mut self, domain: Domain) -> Result<NurbsSurface, GeomError> {
+        self.domain = restrict_domain(self.domain, Some(domain))?;
+        Ok(self)
     }
 
     /// `[degree in u, degree in v]`.

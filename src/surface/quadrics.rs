@@ -12,7 +12,7 @@ use super::frame::Frame;
 use super::rotational::{rotational_jet, Profile};
 use super::validate::{interval, positive, restrict_domain, Domain, FULL_TURN};
 use super::{StepRule, Surface};
-use crate::error::{require_finite, GeomError};
+use crate::error::{require_finite, require_finite_all, GeomError};
 use crate::num::Real;
 
 const HALF_PI: f64 = std::f64::consts::FRAC_PI_2;
@@ -66,6 +66,7 @@ impl Sphere {
         axis: Option<[f64; 3]>,
         reference: Option<[f64; 3]>,
     ) -> Result<Sphere, GeomError> {
+        require_finite_all("center", &center)?;
         let frame = Frame::new(center, axis.unwrap_or(Z_AXIS), reference)?;
         Ok(Sphere {
             frame,
@@ -112,6 +113,7 @@ impl Ellipsoid {
         axis: Option<[f64; 3]>,
         reference: Option<[f64; 3]>,
     ) -> Result<Ellipsoid, GeomError> {
+        require_finite_all("center", &center)?;
         let frame = Frame::new(center, axis.unwrap_or(Z_AXIS), reference)?;
         Ok(Ellipsoid {
             frame,
@@ -169,6 +171,7 @@ impl Hyperboloid {
         reference: Option<[f64; 3]>,
         range: [f64; 2],
     ) -> Result<Hyperboloid, GeomError> {
+        require_finite_all("center", &center)?;
         let frame = Frame::new(center, axis, reference)?;
         Ok(Hyperboloid {
             frame,
@@ -221,6 +224,7 @@ impl Paraboloid {
         reference: Option<[f64; 3]>,
         range: [f64; 2],
     ) -> Result<Paraboloid, GeomError> {
+        require_finite_all("center", &center)?;
         let frame = Frame::new(center, axis, reference)?;
         Ok(Paraboloid {
             frame,

@@ -11,7 +11,7 @@ use super::frame::Frame;
 use super::rotational::{rotational_jet, Profile};
 use super::validate::{non_negative, positive, restrict_domain, Domain, FULL_TURN};
 use super::{StepRule, Surface};
-use crate::error::GeomError;
+use crate::error::{require_finite_all, GeomError};
 use crate::num::Real;
 
 /// A torus with major radius `R ≥ 0` and minor radius `r > 0`.
@@ -32,6 +32,7 @@ impl Torus {
         axis: [f64; 3],
         reference: Option<[f64; 3]>,
     ) -> Result<Torus, GeomError> {
+        require_finite_all("center", &center)?;
         let frame = Frame::new(center, axis, reference)?;
         let major = non_negative("major", major)?;
         let minor = positive("minor", minor)?;
