@@ -7,7 +7,7 @@
 
 mod surface_support;
 
-use geocert::num::{Interval, IntervalLike, MpfrInterval, Real};
+use geocert::num::{Interval, MpfrInterval, Real};
 use geocert::surface::Surface;
 use surface_support::{nurbs_bicubic, zoo, Rng, Visit};
 
@@ -142,7 +142,7 @@ fn nurbs_boxes_straddling_knots_are_enclosed() {
         check_box("nurbs across knots", &s, u, v, &mut rng);
     }
     // Across the double knot s_uu jumps: the box encloses both one-sided values.
-    let box_uu = s.jet(&Interval::from_bounds(0.39, 0.41), &Interval::point(0.0), 2)[3].clone();
+    let box_uu = s.jet(&Interval::from_bounds(0.39, 0.41), &Interval::point(0.0), 2)[3];
     let left = s.jet(&0.39999999, &0.0, 2)[3];
     let right = s.jet(&0.4, &0.0, 2)[3];
     assert!(

@@ -110,7 +110,7 @@ fn analytic_surfaces_name_the_bad_field() {
             pair("invalid_value", "half_angle"),
         ),
         (
-            json!({"type": "cone", "origin": [0, 0, 0], "radius": 1, "half_angle": 1.5707963267948966, "axis": [0, 0, 1], "height": [0, 1]}),
+            json!({"type": "cone", "origin": [0, 0, 0], "radius": 1, "half_angle": std::f64::consts::FRAC_PI_2, "axis": [0, 0, 1], "height": [0, 1]}),
             pair("invalid_value", "half_angle"),
         ),
         (
@@ -319,8 +319,10 @@ fn motion_surfaces_and_walks_name_the_bad_field() {
         let e = SurfaceWalk::new(&bounded, SurfaceWalkOptions::new(bad)).unwrap_err();
         assert_eq!(kind_field(e), pair("invalid_value", "delta_alpha"));
     }
-    let mut o = SurfaceWalkOptions::default();
-    o.delta = -1.0;
+    let o = SurfaceWalkOptions {
+        delta: -1.0,
+        ..Default::default()
+    };
     assert_eq!(
         kind_field(SurfaceWalk::new(&bounded, o).unwrap_err()),
         pair("invalid_value", "delta")

@@ -318,8 +318,8 @@ fn closed_surfaces_meet_at_their_seams() {
     for (name, s) in any_surfaces() {
         let closed = s.is_closed();
         let (du, dv) = s.domain();
-        for d in 0..2 {
-            if !closed[d] {
+        for (d, &is_closed) in closed.iter().enumerate() {
+            if !is_closed {
                 continue;
             }
             let other = if d == 0 { dv } else { du };

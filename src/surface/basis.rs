@@ -43,46 +43,58 @@ fn row(d: usize) -> usize {
 /// degrees: the `k`-th derivative comes from row `degree − k` by applying `k` times the
 /// derivative rule (1.12) `D N_{i,m} = β_{i,m} N_{i,m−1} − β_{i+1,m} N_{i+1,m−1}`, with
 /// `beta(m, j)` the coefficient of the `j`-th function of row `m − 1`
-/// (`β_{i,m} = m/(t_{i+m} − t_i)`, `m` for Bernstein).
+/// (`β_{i,m} = m/(t_{i+m} − t_i)`, `m` for Bernstein). The rule is applied in place,
+/// from the right, so one buffer serves every step.
 fn derivatives<T: Real>(
-    triangle: &[T],
+    mut buf: Vec<T>,
     degree: usize,
     order: usize,
     beta: impl Fn(usize, usize) -> T,
 ) -> Vec<T> {
     let p = degree;
-    let mut out: Vec<T> = triangle[row(p)..row(p) + p + 1].to_vec();
+    let tri_len = row(p + 1);
+    debug_assert_eq!(buf.len(), tri_len);
+    buf.extend_from_within(row(p)..row(p) + p + 1);
     for k in 1..=order.min(p) {
         let start = p - k;
-        let mut c: Vec<T> = triangle[row(start)..row(start) + start + 1].to_vec();
+        let tail = buf.len();
+        buf.extend_from_within(row(start)..row(start) + start + 1);
         for m in start + 1..=p {
-            // c has m entries (functions of degree m − 1); build the m + 1 of degree m.
-            let b: Vec<T> = (0..m).map(|j| beta(m, j)).collect();
-            let mut next = Vec::with_capacity(m + 1);
-            for j in 0..=m {
-                let left = (j >= 1).then(|| b[j - 1].clone() * &c[j - 1]);
-                let right = (j < m).then(|| b[j].clone() * &c[j]);
-                next.push(match (left, right) {
+            // c = buf[tail..] holds m functions of degree m − 1; make it the m + 1 of
+            // degree m: c[j] ← β(m, j−1)·c[j−1] − β(m, j)·c[j], from j = m down to 0 (each
+            // step reads only entries not yet overwritten; β(m, j) is reused from the
+            // step before).
+            buf.push(buf[tail].zero_like());
+            let c = &mut buf[tail..];
+            let mut beta_j: Option<T> = None;
+            for j in (0..=m).rev() {
+                let right = beta_j.take().map(|b| b * &c[j]);
+                let left = (j >= 1).then(|| {
+                    let b = beta(m, j - 1);
+                    let term = b.clone() * &c[j - 1];
+                    beta_j = Some(b);
+                    term
+                });
+                c[j] = match (left, right) {
                     (Some(l), Some(r)) => l - r,
                     (Some(l), None) => l,
                     (None, Some(r)) => -r,
                     (None, None) => unreachable!("m ≥ 1"),
-                });
+                };
             }
-            c = next;
         }
-        out.extend(c);
     }
-    let zero = out[0].zero_like();
-    out.resize((order + 1) * (p + 1), zero);
-    out
+    let zero = buf[0].zero_like();
+    buf.resize(tri_len + (order + 1) * (p + 1), zero);
+    buf.drain(..tri_len);
+    buf
 }
 
 /// The Bernstein polynomials `B_{j,n}(t)` (2.5) and their derivatives up to `order`.
 pub fn bernstein_jet<T: Real>(n: usize, t: &T, order: usize) -> BasisJet<T> {
     let one = t.one_like();
     let s = one.clone() - t;
-    let mut tri = Vec::with_capacity(row(n + 1));
+    let mut tri = Vec::with_capacity(row(n + 1) + (order + 2) * (n + 1));
     tri.push(one);
     for d in 1..=n {
         let prev = row(d - 1);
@@ -99,7 +111,7 @@ pub fn bernstein_jet<T: Real>(n: usize, t: &T, order: usize) -> BasisJet<T> {
             tri.push(v);
         }
     }
-    let values = derivatives(&tri, n, order, |m, _| t.lift(m as f64));
+    let values = derivatives(tri, n, order, |m, _| t.lift(m as f64));
     BasisJet { degree: n, values }
 }
 
@@ -118,16 +130,22 @@ pub fn bspline_jet<T: Real>(
     let knot = |i: usize| t.lift(knots[i]);
     // α_{i,d} = (t − t_i)/(t_{i+d} − t_i) for i = span−d+1 ..= span.
     let alpha = |i: usize, d: usize| (t.clone() - knot(i)) / (knot(i + d) - knot(i));
-    let mut tri = Vec::with_capacity(row(p + 1));
+    let mut tri = Vec::with_capacity(row(p + 1) + (order + 2) * (p + 1));
     tri.push(t.one_like());
     for d in 1..=p {
         let prev = row(d - 1);
         let first = span + 1 - d; // the i of α for j = 1
-        let alphas: Vec<T> = (0..d).map(|k| alpha(first + k, d)).collect();
+                                  // The α of step j is the α_{i+1} of step j − 1.
+        let mut alpha_i: Option<T> = None;
         for j in 0..=d {
             // N_{i,d} = α_{i,d} N_{i,d−1} + (1 − α_{i+1,d}) N_{i+1,d−1}, i = span−d+j.
-            let a = (j >= 1).then(|| alphas[j - 1].clone() * &tri[prev + j - 1]);
-            let b = (j < d).then(|| (t.one_like() - &alphas[j]) * &tri[prev + j]);
+            let a = alpha_i.take().map(|al| al * &tri[prev + j - 1]);
+            let b = (j < d).then(|| {
+                let al = alpha(first + j, d);
+                let term = (t.one_like() - &al) * &tri[prev + j];
+                alpha_i = Some(al);
+                term
+            });
             let v = match (a, b) {
                 (Some(a), Some(b)) => a + b,
                 (Some(a), None) => a,
@@ -142,7 +160,7 @@ pub fn bspline_jet<T: Real>(
         let i = span + 1 + j - m;
         t.lift(m as f64) / (knot(i + m) - knot(i))
     };
-    let values = derivatives(&tri, p, order, beta);
+    let values = derivatives(tri, p, order, beta);
     BasisJet { degree: p, values }
 }
 
@@ -177,14 +195,15 @@ pub fn find_span(knots: &[f64], p: usize, n: usize, t: f64) -> usize {
     lo
 }
 
-/// The non-empty spans whose polynomial pieces define the function at some point of
-/// `[lo, hi]` under the right-continuous convention of [`find_span`].
-pub fn spans_touching(knots: &[f64], p: usize, n: usize, (lo, hi): (f64, f64)) -> Vec<usize> {
-    let (a, b) = (find_span(knots, p, n, lo), find_span(knots, p, n, hi));
-    if a == b {
-        return vec![a];
+/// The first and last spans whose polynomial pieces define the function at some point
+/// of `[lo, hi]` under the right-continuous convention of [`find_span`] (the empty spans
+/// between them are to be skipped).
+pub fn spans_touching(knots: &[f64], p: usize, n: usize, (lo, hi): (f64, f64)) -> (usize, usize) {
+    let a = find_span(knots, p, n, lo);
+    if lo == hi {
+        return (a, a);
     }
-    (a..=b).filter(|&s| knots[s] < knots[s + 1]).collect()
+    (a, find_span(knots, p, n, hi))
 }
 
 /// An enclosure of the union of two enclosures: the interval hull for the interval

@@ -4,6 +4,7 @@
 
 use super::basis::bernstein_jet;
 use super::nurbs::validate_net;
+use super::taylor::{centre, is_point, taylor_tensor_jet};
 use super::tensor::{tensor_jet, Net};
 use super::validate::{restrict_domain, Domain};
 use super::Surface;
@@ -62,9 +63,16 @@ impl Surface for BezierSurface {
         self.domain
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
-        let (du, dv) = self.degrees();
-        let bu = bernstein_jet(du, u, order);
-        let bv = bernstein_jet(dv, v, order);
-        tensor_jet(&self.net, &bu, 0, &bv, 0, order)
+        let (pu, pv) = self.degrees();
+        if is_point(u) && is_point(v) {
+            let bu = bernstein_jet(pu, u, order);
+            let bv = bernstein_jet(pv, v, order);
+            return tensor_jet(&self.net, &bu, 0, &bv, 0, order);
+        }
+        // An interval box: the centred form (super::taylor).
+        let ((cu, du), (cv, dv)) = (centre(u), centre(v));
+        let bu = bernstein_jet(pu, &cu, pu);
+        let bv = bernstein_jet(pv, &cv, pv);
+        taylor_tensor_jet(&self.net, &bu, &du, 0, &bv, &dv, 0, order)
     }
 }

@@ -3,11 +3,14 @@
 //! net row `i` ↔ `v`, position `j` ↔ `u`, optional positive weights. Domain
 //! `[knots_u[p], knots_u[cols]] × [knots_v[q], knots_v[rows]]` (0-based).
 //!
-//! An interval parameter that straddles knots is evaluated on every span it touches and
-//! the results are joined ([`super::basis::hull`]), so the jet encloses the surface over
-//! the whole box; a parameter exactly on a knot takes the right span, as f64 does.
+//! An interval box is evaluated in the centred form of [`super::taylor`] (tight on small
+//! boxes). A parameter interval that straddles knots is evaluated on every span it
+//! touches and the results are joined ([`super::basis::hull`]), so the jet encloses the
+//! surface over the whole box; a parameter exactly on a knot takes the right span, as
+//! f64 does.
 
 use super::basis::{bspline_jet, hull, spans_touching, BasisJet};
+use super::taylor::{centre, is_point, taylor_tensor_jet};
 use super::tensor::{tensor_jet, Net};
 use super::validate::{degree, knot_vector, positive, restrict_domain, Domain};
 use super::Surface;
@@ -154,19 +157,43 @@ impl NurbsSurface {
         Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
     }
 
-    /// The basis jets on every span that `t` touches in `direction`.
-    fn basis<T: Real>(&self, direction: usize, t: &T, order: usize) -> Vec<(usize, BasisJet<T>)> {
-        let p = self.degrees[direction];
-        let n = if direction == 0 {
+    /// The number of control points in `direction`.
+    fn count(&self, direction: usize) -> usize {
+        if direction == 0 {
             self.net.cols
         } else {
             self.net.rows
-        };
+        }
+    }
+
+    /// The basis jet on span `s` in `direction`: at `t` up to `order`, or, for a
+    /// centred evaluation, at the centre `c` up to the degree.
+    fn basis<T: Real>(
+        &self,
+        direction: usize,
+        s: usize,
+        t: &T,
+        centre: Option<&T>,
+        order: usize,
+    ) -> BasisJet<T> {
+        let p = self.degrees[direction];
         let knots = &self.knots[direction];
-        spans_touching(knots, p, n, t.bounds())
-            .into_iter()
-            .map(|s| (s - p, bspline_jet(knots, p, s, t, order)))
-            .collect()
+        match centre {
+            Some(c) => bspline_jet(knots, p, s, c, p),
+            None => bspline_jet(knots, p, s, t, order),
+        }
+    }
+
+    /// The non-empty spans that `t` touches in `direction`.
+    fn spans<T: Real>(&self, direction: usize, t: &T) -> impl Iterator<Item = usize> + '_ {
+        let knots = &self.knots[direction];
+        let (a, b) = spans_touching(
+            knots,
+            self.degrees[direction],
+            self.count(direction),
+            t.bounds(),
+        );
+        (a..=b).filter(move |&s| a == b || knots[s] < knots[s + 1])
     }
 }
 
@@ -188,12 +215,24 @@ impl Surface for NurbsSurface {
     }
 
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
-        let bu = self.basis(0, u, order);
-        let bv = self.basis(1, v, order);
+        // Interval boxes: the centred form (super::taylor); points: the direct sums.
+        let centred = !is_point(u) || !is_point(v);
+        let ((cu, du), (cv, dv)) = if centred {
+            (centre(u), centre(v))
+        } else {
+            ((u.clone(), u.zero_like()), (v.clone(), v.zero_like()))
+        };
+        let [p, q] = self.degrees;
         let mut result: Option<Vec<[T; 3]>> = None;
-        for (first_v, jv) in &bv {
-            for (first_u, ju) in &bu {
-                let jet = tensor_jet(&self.net, ju, *first_u, jv, *first_v, order);
+        for sv in self.spans(1, v) {
+            let jv = self.basis(1, sv, v, centred.then_some(&cv), order);
+            for su in self.spans(0, u) {
+                let ju = self.basis(0, su, u, centred.then_some(&cu), order);
+                let jet = if centred {
+                    taylor_tensor_jet(&self.net, &ju, &du, su - p, &jv, &dv, sv - q, order)
+                } else {
+                    tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
+                };
                 result = Some(match result {
                     None => jet,
                     Some(acc) => acc

@@ -28,7 +28,7 @@ pub(crate) struct Net {
 }
 
 /// `(ku, kv)` derivative orders in jet order `s, s_u, s_v, s_uu, s_uv, s_vv`.
-const ORDERS: [(usize, usize); 6] = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)];
+pub(crate) const ORDERS: [(usize, usize); 6] = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)];
 
 fn jet_len(order: usize) -> usize {
     match order {
@@ -51,29 +51,30 @@ fn homogeneous<T: Real, const D: usize>(
     let zero = bu.get(0, 0).zero_like();
     let (pu, pv) = (bu.degree, bv.degree);
     let ku_max = order.min(2);
-    // rows_sum[k][i] = Σ_j N_j^{(k)}(u) P(first_v + i, first_u + j)
-    let mut rows_sum: Vec<Vec<[T; D]>> = vec![Vec::with_capacity(pv + 1); ku_max + 1];
+    let zeros = || -> [T; D] { std::array::from_fn(|_| zero.clone()) };
+    // rows_sum[i][k] = Σ_j N_j^{(k)}(u) P(first_v + i, first_u + j), k ≤ 2.
+    let mut rows_sum: Vec<[[T; D]; 3]> = Vec::with_capacity(pv + 1);
     for i in 0..=pv {
-        let pts: Vec<[T; D]> = (0..=pu).map(|j| point(first_v + i, first_u + j)).collect();
-        for (k, sums) in rows_sum.iter_mut().enumerate() {
-            let mut acc: [T; D] = std::array::from_fn(|_| zero.clone());
-            for (j, p) in pts.iter().enumerate() {
+        let mut acc: [[T; D]; 3] = std::array::from_fn(|_| zeros());
+        for j in 0..=pu {
+            let p = point(first_v + i, first_u + j);
+            for (k, a) in acc.iter_mut().enumerate().take(ku_max + 1) {
                 let n = bu.get(k, j);
                 for c in 0..D {
-                    acc[c] = acc[c].clone() + n.clone() * &p[c];
+                    a[c] = a[c].clone() + n.clone() * &p[c];
                 }
             }
-            sums.push(acc);
         }
+        rows_sum.push(acc);
     }
     ORDERS[..jet_len(order)]
         .iter()
         .map(|&(ku, kv)| {
-            let mut acc: [T; D] = std::array::from_fn(|_| zero.clone());
-            for (i, r) in rows_sum[ku].iter().enumerate() {
+            let mut acc = zeros();
+            for (i, r) in rows_sum.iter().enumerate() {
                 let n = bv.get(kv, i);
                 for c in 0..D {
-                    acc[c] = acc[c].clone() + n.clone() * &r[c];
+                    acc[c] = acc[c].clone() + n.clone() * &r[ku][c];
                 }
             }
             acc
@@ -114,7 +115,7 @@ pub(crate) fn tensor_jet<T: Real>(
 }
 
 /// The quotient rule (module doc) on the homogeneous jet `[A | W]`.
-fn quotient<T: Real>(h: &[[T; 4]]) -> Vec<[T; 3]> {
+pub(crate) fn quotient<T: Real>(h: &[[T; 4]]) -> Vec<[T; 3]> {
     let w = &h[0][3];
     let a = |k: usize| -> [T; 3] { [h[k][0].clone(), h[k][1].clone(), h[k][2].clone()] };
     let wd = |k: usize| &h[k][3];

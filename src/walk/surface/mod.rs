@@ -15,7 +15,7 @@
 
 mod proven;
 
-pub use proven::{proven_surface_steps, ProvenSteps};
+pub use proven::{proven_surface_steps, turning_bounds, ProvenSteps, MAX_HALVINGS};
 
 use crate::error::GeomError;
 use crate::num::Interval;
