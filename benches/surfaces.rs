@@ -1,8 +1,9 @@
 //! Issue 5 benchmarks: a rational bicubic NURBS patch (6 × 6 net, interior knots).
 //! * the point alone vs the point with first and second derivatives (f64; goal ≤ 3×);
 //! * the interval enclosure of the same jet over a small box (f64 intervals; goal ≤ 20×
-//!   one f64 evaluation of the jet), also over a box that straddles a knot, and at
-//!   200-bit MPFR for reference.
+//!   one f64 evaluation of the jet) in the centred form that `jet` uses, and by the
+//!   direct sums (`direct_jet`: cheaper, looser); over a box that straddles a knot; and
+//!   at 200-bit MPFR for reference.
 //!
 //! Each benchmark evaluates 256 prepared inputs per iteration (Throughput: 256).
 //! Results and the command: BENCHMARKS-surfaces.md.
@@ -99,6 +100,13 @@ fn bench_nurbs(c: &mut Criterion) {
             }
         })
     });
+    g.bench_function("interval_box_jet2_direct_sums", |b| {
+        b.iter(|| {
+            for (u, v) in &boxes {
+                black_box(s.direct_jet(black_box(u), black_box(v), 2));
+            }
+        })
+    });
     g.bench_function("interval_box_jet2_across_knot", |b| {
         b.iter(|| {
             for (u, v) in &straddling {
@@ -111,6 +119,35 @@ fn bench_nurbs(c: &mut Criterion) {
             for (u, v) in &mpfr {
                 black_box(s.jet(black_box(u), black_box(v), 2));
             }
+        })
+    });
+    g.finish();
+
+    // The floor of any interval evaluation: one multiply-add, f64 vs f64 interval, on
+    // the same 256 inputs (a dependent chain, as in a basis or tensor sum).
+    let xs: Vec<f64> = params.iter().map(|p| 0.5 + 0.5 * p.0).collect();
+    let ixs: Vec<Interval> = xs
+        .iter()
+        .map(|&x| Interval::from_bounds(x, x + 1e-3))
+        .collect();
+    let mut g = c.benchmark_group("multiply_add");
+    g.throughput(Throughput::Elements(N as u64));
+    g.bench_function("f64", |b| {
+        b.iter(|| {
+            let mut acc = 0.0f64;
+            for x in &xs {
+                acc = acc * black_box(*x) + x;
+            }
+            acc
+        })
+    });
+    g.bench_function("interval", |b| {
+        b.iter(|| {
+            let mut acc = Interval::ZERO;
+            for x in &ixs {
+                acc = acc * black_box(*x) + x;
+            }
+            acc
         })
     });
     g.finish();

@@ -5,12 +5,10 @@
 //! recursions below evaluate it (and its derivatives) by enclosing operations, with every
 //! knot difference formed from the exact knots in the number type. An interval parameter
 //! that straddles knots is evaluated on every span it touches and the results are joined
-//! with [`hull`] (see [`spans_touching`]). Outside the domain the first / last
+//! with [`super::sets::hull`] (see [`spans_touching`]). Outside the domain the first / last
 //! polynomial piece is continued.
 
-use std::any::Any;
-
-use crate::num::{Interval, IntervalLike, MpfrInterval, Real};
+use crate::num::Real;
 
 /// The values and derivatives of the `degree + 1` basis functions that are non-zero on
 /// one span: `get(k, j)` is the `k`-th derivative of the `j`-th of them (for B-splines,
@@ -204,28 +202,4 @@ pub fn spans_touching(knots: &[f64], p: usize, n: usize, (lo, hi): (f64, f64)) -
         return (a, a);
     }
     (a, find_span(knots, p, n, hi))
-}
-
-/// An enclosure of the union of two enclosures: the interval hull for the interval
-/// types of this crate. For f64 (a point parameter, which never straddles spans) the
-/// first argument.
-///
-/// # Panics
-/// For a [`Real`] type other than `f64`, [`Interval`] and [`MpfrInterval`] (add it
-/// here; no user input reaches this).
-pub fn hull<T: Real>(a: &T, b: &T) -> T {
-    let mut out = a.clone();
-    let any_out: &mut dyn Any = &mut out;
-    if let Some(x) = any_out.downcast_mut::<Interval>() {
-        if let Some(y) = (b as &dyn Any).downcast_ref::<Interval>() {
-            *x = IntervalLike::hull(x, y);
-        }
-    } else if let Some(x) = any_out.downcast_mut::<MpfrInterval>() {
-        if let Some(y) = (b as &dyn Any).downcast_ref::<MpfrInterval>() {
-            *x = IntervalLike::hull(x, y);
-        }
-    } else if !any_out.is::<f64>() {
-        panic!("basis::hull: unsupported number type");
-    }
-    out
 }

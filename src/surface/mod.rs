@@ -18,6 +18,7 @@ pub mod nurbs;
 pub mod plane;
 pub mod quadrics;
 mod rotational;
+pub mod sets;
 mod taylor;
 mod tensor;
 pub mod torus;

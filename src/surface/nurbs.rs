@@ -5,11 +5,12 @@
 //!
 //! An interval box is evaluated in the centred form of [`super::taylor`] (tight on small
 //! boxes). A parameter interval that straddles knots is evaluated on every span it
-//! touches and the results are joined ([`super::basis::hull`]), so the jet encloses the
+//! touches and the results are joined ([`super::sets::hull`]), so the jet encloses the
 //! surface over the whole box; a parameter exactly on a knot takes the right span, as
 //! f64 does.
 
-use super::basis::{bspline_jet, hull, spans_touching, BasisJet};
+use super::basis::{bspline_jet, spans_touching, BasisJet};
+use super::sets::hull;
 use super::taylor::{centre, is_point, taylor_tensor_jet};
 use super::tensor::{tensor_jet, Net};
 use super::validate::{degree, knot_vector, positive, restrict_domain, Domain};
@@ -157,6 +158,44 @@ impl NurbsSurface {
         Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
     }
 
+    /// The jet by the direct sums `Σ N_j(u) N_i(v) w_ij P_ij` even over interval boxes:
+    /// a valid enclosure, cheaper than [`Surface::jet`]'s centred form but looser by a
+    /// roughly constant factor (it loses the cancellation `Σ N_j' = 0`), however small
+    /// the box.
+    pub fn direct_jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
+        self.evaluate(u, v, order, false)
+    }
+
+    fn evaluate<T: Real>(&self, u: &T, v: &T, order: usize, centred: bool) -> Vec<[T; 3]> {
+        let ((cu, du), (cv, dv)) = if centred {
+            (centre(u), centre(v))
+        } else {
+            ((u.clone(), u.zero_like()), (v.clone(), v.zero_like()))
+        };
+        let [p, q] = self.degrees;
+        let mut result: Option<Vec<[T; 3]>> = None;
+        for sv in self.spans(1, v) {
+            let jv = self.basis(1, sv, v, centred.then_some(&cv), order);
+            for su in self.spans(0, u) {
+                let ju = self.basis(0, su, u, centred.then_some(&cu), order);
+                let jet = if centred {
+                    taylor_tensor_jet(&self.net, &ju, &du, su - p, &jv, &dv, sv - q, order)
+                } else {
+                    tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
+                };
+                result = Some(match result {
+                    None => jet,
+                    Some(acc) => acc
+                        .iter()
+                        .zip(&jet)
+                        .map(|(a, b)| std::array::from_fn(|c| hull(&a[c], &b[c])))
+                        .collect(),
+                });
+            }
+        }
+        result.expect("at least one span")
+    }
+
     /// The number of control points in `direction`.
     fn count(&self, direction: usize) -> usize {
         if direction == 0 {
@@ -216,33 +255,6 @@ impl Surface for NurbsSurface {
 
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         // Interval boxes: the centred form (super::taylor); points: the direct sums.
-        let centred = !is_point(u) || !is_point(v);
-        let ((cu, du), (cv, dv)) = if centred {
-            (centre(u), centre(v))
-        } else {
-            ((u.clone(), u.zero_like()), (v.clone(), v.zero_like()))
-        };
-        let [p, q] = self.degrees;
-        let mut result: Option<Vec<[T; 3]>> = None;
-        for sv in self.spans(1, v) {
-            let jv = self.basis(1, sv, v, centred.then_some(&cv), order);
-            for su in self.spans(0, u) {
-                let ju = self.basis(0, su, u, centred.then_some(&cu), order);
-                let jet = if centred {
-                    taylor_tensor_jet(&self.net, &ju, &du, su - p, &jv, &dv, sv - q, order)
-                } else {
-                    tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
-                };
-                result = Some(match result {
-                    None => jet,
-                    Some(acc) => acc
-                        .iter()
-                        .zip(&jet)
-                        .map(|(a, b)| std::array::from_fn(|c| hull(&a[c], &b[c])))
-                        .collect(),
-                });
-            }
-        }
-        result.expect("at least one span")
+        self.evaluate(u, v, order, !is_point(u) || !is_point(v))
     }
 }

@@ -20,6 +20,7 @@
 //! enclosing operations, so the result encloses the jet over the box.
 
 use super::basis::BasisJet;
+use super::sets::meet;
 use super::tensor::{quotient, Net, ORDERS};
 use super::vector::lift;
 use crate::num::Real;
@@ -65,7 +66,7 @@ fn centred_homogeneous<T: Real, const D: usize>(
     first_v: usize,
     order: usize,
     point: impl Fn(usize, usize) -> [T; D],
-) -> ([f64; 3], Vec<[T; D]>) {
+) -> ([f64; 3], Vec<[T; D]>, Vec<[T; D]>) {
     let like = delta_u;
     let (p, q) = (bu.degree, bv.degree);
     let zero = like.zero_like();
@@ -172,6 +173,19 @@ fn centred_homogeneous<T: Real, const D: usize>(
                 .collect()
         })
         .collect();
+    // The same derivatives at the centre (δ = 0): ∂_u^a ∂_v^b H(m) = a! b! C_ab.
+    let at_centre = ORDERS[..len]
+        .iter()
+        .map(|&(da, db)| {
+            let f = like.lift(factorial(da) * factorial(db));
+            let c = if da <= p && db <= q {
+                coef[da * (q + 1) + db].clone()
+            } else {
+                zeros()
+            };
+            std::array::from_fn(|i| f.clone() * &c[i])
+        })
+        .collect();
     let h = ORDERS[..len]
         .iter()
         .map(|&(da, db)| {
@@ -185,11 +199,17 @@ fn centred_homogeneous<T: Real, const D: usize>(
             acc
         })
         .collect();
-    (reference, h)
+    (reference, h, at_centre)
 }
 
 /// The jet of the patch on one pair of spans over the box `m + δ`, from the basis
 /// derivatives at the centre up to the degrees (`bu.order() == bu.degree`).
+///
+/// For rational patches the quotient rule over the box overestimates the first
+/// derivatives to first order in the box width (`W_u·s` and `A_u` vary together), so
+/// `s`, `s_u`, `s_v` are also enclosed by the mean value form
+/// `E(m) + E_u(box)·δ_u + E_v(box)·δ_v` (valid on one polynomial piece: `E` is smooth
+/// there) and the two enclosures are intersected ([`super::sets::meet`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn taylor_tensor_jet<T: Real>(
     net: &Net,
@@ -203,12 +223,18 @@ pub(crate) fn taylor_tensor_jet<T: Real>(
 ) -> Vec<[T; 3]> {
     let like = delta_u;
     let (reference, mut jet) = match &net.weights {
-        None => centred_homogeneous(bu, delta_u, first_u, bv, delta_v, first_v, order, |i, j| {
-            lift(like, &net.points[i * net.cols + j])
-        }),
-        Some(w) => {
-            let (reference, h) =
+        None => {
+            let (reference, h, _) =
                 centred_homogeneous(bu, delta_u, first_u, bv, delta_v, first_v, order, |i, j| {
+                    lift(like, &net.points[i * net.cols + j])
+                });
+            (reference, h)
+        }
+        Some(w) => {
+            // The mean value form of the first derivatives needs the second ones.
+            let inner = if order >= 1 { 2 } else { 0 };
+            let (reference, h, at_centre) =
+                centred_homogeneous(bu, delta_u, first_u, bv, delta_v, first_v, inner, |i, j| {
                     let k = i * net.cols + j;
                     let wt = like.lift(w[k]);
                     let p = &net.points[k];
@@ -219,7 +245,23 @@ pub(crate) fn taylor_tensor_jet<T: Real>(
                         wt,
                     ]
                 });
-            (reference, quotient(&h))
+            let mut jet = quotient(&h);
+            if order >= 1 {
+                let centre = quotient(&at_centre);
+                let mvf = |e: usize, eu: usize, ev: usize, jet: &[[T; 3]]| -> [T; 3] {
+                    std::array::from_fn(|c| {
+                        let form = centre[e][c].clone()
+                            + jet[eu][c].clone() * delta_u
+                            + jet[ev][c].clone() * delta_v;
+                        meet(&jet[e][c], &form)
+                    })
+                };
+                jet[1] = mvf(1, 3, 4, &jet);
+                jet[2] = mvf(2, 4, 5, &jet);
+                jet[0] = mvf(0, 1, 2, &jet);
+                jet.truncate(if order == 1 { 3 } else { 6 });
+            }
+            (reference, jet)
         }
     };
     let r = lift(like, &reference);
