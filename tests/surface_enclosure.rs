@@ -154,6 +154,8 @@ fn nurbs_boxes_straddling_knots_are_enclosed() {
     }
 }
 
+type Jet = Vec<[Interval; 3]>;
+
 #[test]
 fn patch_enclosures_are_tight_on_small_boxes() {
     // The centred form of a Bézier/NURBS patch: over a box of width w the enclosure of
@@ -173,11 +175,7 @@ fn patch_enclosures_are_tight_on_small_boxes() {
             Interval::from_bounds(u, u + w),
             Interval::from_bounds(v, v + w),
         );
-        let (centred, direct, sampled): (
-            Vec<[Interval; 3]>,
-            Vec<[Interval; 3]>,
-            Vec<Vec<[f64; 3]>>,
-        ) = if k % 2 == 0 {
+        let (centred, direct, sampled): (Jet, Jet, Vec<Vec<[f64; 3]>>) = if k % 2 == 0 {
             let vv = -1.0 + 3.0 * v; // nurbs v ∈ [-1, 2]
             let iv = Interval::from_bounds(vv, vv + w);
             let grid = (0..=6)

@@ -196,6 +196,12 @@ impl Surface for Hyperboloid {
     fn is_closed(&self) -> [bool; 2] {
         angular_closed(&self.domain)
     }
+    /// `u` is an angle as on the sphere (impl: §2.2 lists the sphere-like surfaces; on a
+    /// circular section the normal turns by at most `Δu`, and the pole row of a
+    /// paraboloid would otherwise take `Δ_min` steps).
+    fn step_rules(&self) -> [StepRule; 2] {
+        [StepRule::Angle, StepRule::Curvature]
+    }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let (ch, sh) = (v.cosh(), v.sinh());
         let (cosh, sinh) = ([ch.clone(), sh.clone(), ch], [sh.clone(), v.cosh(), sh]);
@@ -244,6 +250,12 @@ impl Surface for Paraboloid {
     }
     fn is_closed(&self) -> [bool; 2] {
         angular_closed(&self.domain)
+    }
+    /// `u` is an angle as on the sphere (impl: §2.2 lists the sphere-like surfaces; on a
+    /// circular section the normal turns by at most `Δu`, and the pole row of a
+    /// paraboloid would otherwise take `Δ_min` steps).
+    fn step_rules(&self) -> [StepRule; 2] {
+        [StepRule::Angle, StepRule::Curvature]
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let (zero, one, two) = (v.zero_like(), v.one_like(), v.lift(2.0));

@@ -111,7 +111,7 @@ fn refined_bounds<S: Surface, T: IntervalLike>(
     delta_alpha: f64,
 ) -> [f64; 2] {
     let mut bound = turning_bounds(surface, like, at, steps, 1);
-    for splits in [2, 4] {
+    for splits in [2] {
         if bound[0] <= delta_alpha && bound[1] <= delta_alpha {
             break;
         }
