@@ -6,7 +6,45 @@
 //! certifier. Evaluated on interval parameters, [`Surface::jet`] encloses every value
 //! and derivative over the parameter box.
 
+pub mod any;
+pub mod basis;
+pub mod bezier;
+pub mod bilinear;
+pub mod differential;
+pub mod frame;
+pub mod implicit;
+pub mod motion;
+pub mod nurbs;
+pub mod plane;
+pub mod quadrics;
+mod rotational;
+pub mod sets;
+mod taylor;
+mod tensor;
+pub mod torus;
+pub mod validate;
+pub mod vector;
+
+pub use any::{AnyImplicit, AnySurface};
+pub use differential::FundamentalForms;
+
 use crate::num::Real;
+
+/// How the walk of OPERATIONS.md §2.2 chooses the step in one parameter direction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum StepRule {
+    /// (2.2): the normal curvature of the coordinate line, `Δ = Δα·√g_ii/|b_ii|`.
+    Curvature,
+    /// (2.1) applied to the coordinate line as a space curve (the generatrix of
+    /// extrusions, revolutions and ruled surfaces).
+    CoordinateCurve,
+    /// An angular parameter: `Δ = Δα` (sphere, ellipsoid, torus; `u` of cylinders,
+    /// cones and revolutions).
+    Angle,
+    /// The coordinate lines are straight: one step covers the range (planes; `v` of
+    /// cylinders, cones, extrusions and ruled surfaces, as §2.2 prescribes).
+    WholeRange,
+}
 
 /// A parametric surface `s(u, v)` on a rectangle `[u_min, u_max] × [v_min, v_max]`.
 pub trait Surface {
@@ -31,6 +69,46 @@ pub trait Surface {
     ///
     /// For interval `u`, `v`, every entry encloses the true value over the box.
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]>;
+
+    /// The §2.2 step rule per direction `[u, v]` (its analytic shortcuts).
+    fn step_rules(&self) -> [StepRule; 2] {
+        [StepRule::Curvature, StepRule::Curvature]
+    }
+
+    /// The non-empty knot span `[a, b]` containing the parameter `t` in `direction`
+    /// (0 = u, 1 = v), for the B-spline clamp of §2.1 (`Δ ≤ ½·span`); `None` for
+    /// surfaces without knots.
+    fn knot_span(&self, direction: usize, t: f64) -> Option<(f64, f64)> {
+        let _ = (direction, t);
+        None
+    }
+
+    /// The unit normal `n̂ = (s_u × s_v)/|s_u × s_v|` (1.6), with the §1.3 limit at
+    /// points where a partial derivative vanishes identically
+    /// ([`differential::unit_normal`]).
+    fn normal<T: Real>(&self, u: &T, v: &T) -> [T; 3] {
+        differential::unit_normal(&self.jet(u, v, 2))
+    }
+
+    /// The fundamental forms (1.7)–(1.8) at `(u, v)`.
+    fn fundamental_forms<T: Real>(&self, u: &T, v: &T) -> FundamentalForms<T> {
+        FundamentalForms::from_jet(&self.jet(u, v, 2))
+    }
+
+    /// The Gaussian curvature `K` (1.9).
+    fn gaussian_curvature<T: Real>(&self, u: &T, v: &T) -> T {
+        self.fundamental_forms(u, v).gaussian_curvature()
+    }
+
+    /// The mean curvature `H` (1.9), signed with respect to the normal (1.6).
+    fn mean_curvature<T: Real>(&self, u: &T, v: &T) -> T {
+        self.fundamental_forms(u, v).mean_curvature()
+    }
+
+    /// The principal curvatures `(k₁, k₂) = H ± √(H² − K)` (1.9).
+    fn principal_curvatures<T: Real>(&self, u: &T, v: &T) -> (T, T) {
+        self.fundamental_forms(u, v).principal_curvatures()
+    }
 }
 
 /// An implicit hypersurface `F(x) = 0` in `D` dimensions: an implicit surface for

@@ -5,9 +5,11 @@
 //! * [`turning_angle_step`] — the step rule shared by curves (2.1) and surfaces (2.2);
 //! * [`curve`] — the curve step (2.1) with its clamps and analytic shortcuts, the
 //!   traversal of §2.3 as the iterator [`CurveWalk`], and the proven step
-//!   [`proven_curve_step`] / [`ProvenCurveWalk`].
+//!   [`proven_curve_step`] / [`ProvenCurveWalk`];
+//! * [`surface`] — the surface steps (2.2) and the row traversal of §2.3.
 
 pub mod curve;
+pub mod surface;
 
 pub use curve::{
     curve_step, proven_curve_step, turning_step_at, CurveSample, CurveWalk, ProvenCurveWalk,

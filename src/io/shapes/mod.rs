@@ -6,10 +6,12 @@
 //! Curved objects take doubles only: a number written as a string (`"p/q"`) is
 //! refused with an `unsupported` error naming the field.
 //!
-//! * [`curve`] — every curve type: [`parse_curve3`], [`parse_curve2`].
+//! * [`curve`] — every curve type: [`parse_curve3`], [`parse_curve2`];
+//! * [`surface`] — every surface type: [`surface::parse_surface`].
 
 pub mod curve;
 mod curve_fields;
+pub mod surface;
 
 pub use curve::{curve3_from_json, parse_curve2, parse_curve3, Curve2Spec, Curve3Spec, PlaneShape};
 

@@ -1,0 +1,260 @@
+//! NURBS patch of OPERATIONS.md §1.6 (1.18) (CASES `nurbs_surface`): degrees `p` (in
+//! `u`) and `q` (in `v`), full knot vectors (`cols + p + 1` and `rows + q + 1` knots),
+//! net row `i` ↔ `v`, position `j` ↔ `u`, optional positive weights. Domain
+//! `[knots_u[p], knots_u[cols]] × [knots_v[q], knots_v[rows]]` (0-based).
+//!
+//! An interval box is evaluated in the centred form of [`super::taylor`] (tight on small
+//! boxes). A parameter interval that straddles knots is evaluated on every span it
+//! touches and the results are joined ([`super::sets::hull`]), so the jet encloses the
+//! surface over the whole box; a parameter exactly on a knot takes the right span, as
+//! f64 does.
+
+use super::basis::{bspline_jet, spans_touching, BasisJet};
+use super::sets::hull;
+use super::taylor::{centre, is_point, taylor_tensor_jet};
+use super::tensor::{tensor_jet, Net};
+use super::validate::{degree, knot_vector, positive, restrict_domain, Domain};
+use super::Surface;
+use crate::error::{require_finite_all, GeomError};
+use crate::num::Real;
+
+/// A validated NURBS patch.
+#[derive(Debug, Clone, PartialEq)]
+pub struct NurbsSurface {
+    pub(crate) degrees: [usize; 2],
+    pub(crate) knots: [Vec<f64>; 2],
+    pub(crate) net: Net,
+    domain: Domain,
+}
+
+/// Check a rectangular net of at least `min_rows × min_cols` finite points and its
+/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`).
+pub(crate) fn validate_net(
+    points: &[Vec<[f64; 3]>],
+    weights: Option<&[Vec<f64>]>,
+    min_rows: usize,
+    min_cols: usize,
+) -> Result<Net, GeomError> {
+    let rows = points.len();
+    if rows < min_rows {
+        return Err(GeomError::CountMismatch {
+            field: "points".into(),
+            expected: format!("at least {min_rows} rows"),
+            found: format!("{rows}"),
+        });
+    }
+    let cols = points[0].len();
+    if cols < min_cols {
+        return Err(GeomError::CountMismatch {
+            field: "points[0]".into(),
+            expected: format!("at least {min_cols} points per row"),
+            found: format!("{cols}"),
+        });
+    }
+    let mut flat = Vec::with_capacity(rows * cols);
+    for (i, r) in points.iter().enumerate() {
+        if r.len() != cols {
+            return Err(GeomError::CountMismatch {
+                field: format!("points[{i}]"),
+                expected: format!("{cols} points (as row 0)"),
+                found: format!("{}", r.len()),
+            });
+        }
+        for (j, p) in r.iter().enumerate() {
+            require_finite_all(&format!("points[{i}][{j}]"), p)?;
+            flat.push(*p);
+        }
+    }
+    let weights = match weights {
+        None => None,
+        Some(w) => {
+            if w.len() != rows {
+                return Err(GeomError::CountMismatch {
+                    field: "weights".into(),
+                    expected: format!("{rows} rows (as points)"),
+                    found: format!("{}", w.len()),
+                });
+            }
+            let mut flat_w = Vec::with_capacity(rows * cols);
+            for (i, r) in w.iter().enumerate() {
+                if r.len() != cols {
+                    return Err(GeomError::CountMismatch {
+                        field: format!("weights[{i}]"),
+                        expected: format!("{cols} weights (as points[{i}])"),
+                        found: format!("{}", r.len()),
+                    });
+                }
+                for (j, &x) in r.iter().enumerate() {
+                    let field = format!("weights[{i}][{j}]");
+                    positive(&field, x).map_err(|e| match e {
+                        GeomError::InvalidValue { field, .. } => GeomError::NonPositiveWeight {
+                            field,
+                            value: format!("{x}"),
+                        },
+                        other => other,
+                    })?;
+                    flat_w.push(x);
+                }
+            }
+            Some(flat_w)
+        }
+    };
+    Ok(Net {
+        rows,
+        cols,
+        points: flat,
+        weights,
+    })
+}
+
+impl NurbsSurface {
+    /// A NURBS patch; errors name `degree_u`, `degree_v`, `knots_u`, `knots_v`
+    /// (length, order, multiplicity, empty domain), `points` and `weights`.
+    pub fn new(
+        [degree_u, degree_v]: [usize; 2],
+        knots_u: Vec<f64>,
+        knots_v: Vec<f64>,
+        points: &[Vec<[f64; 3]>],
+        weights: Option<&[Vec<f64>]>,
+    ) -> Result<NurbsSurface, GeomError> {
+        let p = degree("degree_u", degree_u)?;
+        let q = degree("degree_v", degree_v)?;
+        let net = validate_net(points, weights, q + 1, p + 1)?;
+        let du = knot_vector("knots_u", &knots_u, net.cols, p)?;
+        let dv = knot_vector("knots_v", &knots_v, net.rows, q)?;
+        Ok(NurbsSurface {
+            degrees: [p, q],
+            knots: [knots_u, knots_v],
+            net,
+            domain: (du, dv),
+        })
+    }
+
+    /// The same patch on a sub-rectangle of its domain.
+    pub fn with_domain(mut self, domain: Domain) -> Result<NurbsSurface, GeomError> {
+        self.domain = restrict_domain(self.domain, Some(domain))?;
+        Ok(self)
+    }
+
+    /// `[degree in u, degree in v]`.
+    pub fn degrees(&self) -> [usize; 2] {
+        self.degrees
+    }
+    /// `[knots_u, knots_v]`.
+    pub fn knots(&self) -> &[Vec<f64>; 2] {
+        &self.knots
+    }
+    /// The control points, row by row.
+    pub fn points(&self) -> Vec<Vec<[f64; 3]>> {
+        self.net
+            .points
+            .chunks(self.net.cols)
+            .map(<[_]>::to_vec)
+            .collect()
+    }
+    /// The weights, row by row, if rational.
+    pub fn weights(&self) -> Option<Vec<Vec<f64>>> {
+        let w = self.net.weights.as_ref()?;
+        Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
+    }
+
+    /// The jet by the direct sums `Σ N_j(u) N_i(v) w_ij P_ij` even over interval boxes:
+    /// a valid enclosure, cheaper than [`Surface::jet`]'s centred form but looser by a
+    /// roughly constant factor (it loses the cancellation `Σ N_j' = 0`), however small
+    /// the box.
+    pub fn direct_jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
+        self.evaluate(u, v, order, false)
+    }
+
+    fn evaluate<T: Real>(&self, u: &T, v: &T, order: usize, centred: bool) -> Vec<[T; 3]> {
+        let ((cu, du), (cv, dv)) = if centred {
+            (centre(u), centre(v))
+        } else {
+            ((u.clone(), u.zero_like()), (v.clone(), v.zero_like()))
+        };
+        let [p, q] = self.degrees;
+        let mut result: Option<Vec<[T; 3]>> = None;
+        for sv in self.spans(1, v) {
+            let jv = self.basis(1, sv, v, centred.then_some(&cv), order);
+            for su in self.spans(0, u) {
+                let ju = self.basis(0, su, u, centred.then_some(&cu), order);
+                let jet = if centred {
+                    taylor_tensor_jet(&self.net, &ju, &du, su - p, &jv, &dv, sv - q, order)
+                } else {
+                    tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
+                };
+                result = Some(match result {
+                    None => jet,
+                    Some(acc) => acc
+                        .iter()
+                        .zip(&jet)
+                        .map(|(a, b)| std::array::from_fn(|c| hull(&a[c], &b[c])))
+                        .collect(),
+                });
+            }
+        }
+        result.expect("at least one span")
+    }
+
+    /// The number of control points in `direction`.
+    fn count(&self, direction: usize) -> usize {
+        if direction == 0 {
+            self.net.cols
+        } else {
+            self.net.rows
+        }
+    }
+
+    /// The basis jet on span `s` in `direction`: at `t` up to `order`, or, for a
+    /// centred evaluation, at the centre `c` up to the degree.
+    fn basis<T: Real>(
+        &self,
+        direction: usize,
+        s: usize,
+        t: &T,
+        centre: Option<&T>,
+        order: usize,
+    ) -> BasisJet<T> {
+        let p = self.degrees[direction];
+        let knots = &self.knots[direction];
+        match centre {
+            Some(c) => bspline_jet(knots, p, s, c, p),
+            None => bspline_jet(knots, p, s, t, order),
+        }
+    }
+
+    /// The non-empty spans that `t` touches in `direction`.
+    fn spans<T: Real>(&self, direction: usize, t: &T) -> impl Iterator<Item = usize> + '_ {
+        let knots = &self.knots[direction];
+        let (a, b) = spans_touching(
+            knots,
+            self.degrees[direction],
+            self.count(direction),
+            t.bounds(),
+        );
+        (a..=b).filter(move |&s| a == b || knots[s] < knots[s + 1])
+    }
+}
+
+impl Surface for NurbsSurface {
+    fn domain(&self) -> ([f64; 2], [f64; 2]) {
+        self.domain
+    }
+
+    fn knot_span(&self, direction: usize, t: f64) -> Option<(f64, f64)> {
+        let p = self.degrees[direction];
+        let n = if direction == 0 {
+            self.net.cols
+        } else {
+            self.net.rows
+        };
+        let knots = &self.knots[direction];
+        let s = super::basis::find_span(knots, p, n, t);
+        Some((knots[s], knots[s + 1]))
+    }
+
+    fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
+        // Interval boxes: the centred form (super::taylor); points: the direct sums.
+        self.evaluate(u, v, order, !is_point(u) || !is_point(v))
+    }
+}

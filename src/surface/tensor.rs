@@ -1,0 +1,152 @@
+//! The tensor-product (rational) patch (1.18) on one pair of spans: the homogeneous
+//! sums `A = Σ N_i(v) N_j(u) w_ij P_ij`, `W = Σ N_i(v) N_j(u) w_ij` and their partial
+//! derivatives, then the quotient rule of §1.5 extended to two variables:
+//!
+//! ```text
+//! s    = A/W
+//! s_u  = (A_u − W_u s)/W                    s_v  = (A_v − W_v s)/W
+//! s_uu = (A_uu − 2W_u s_u − W_uu s)/W       s_vv = (A_vv − 2W_v s_v − W_vv s)/W
+//! s_uv = (A_uv − W_u s_v − W_v s_u − W_uv s)/W
+//! ```
+//!
+//! Rows of the net go with `v`, positions in a row with `u` (§1.6). The sum runs row by
+//! row: first `R_k(row) = Σ_j N_j^{(k)}(u) P_row,j`, then `Σ_i N_i^{(l)}(v) R_k(i)`, so
+//! the second derivatives cost about three times the point. Interval evaluation
+//! encloses: every step is an enclosing operation on exact (lifted) data.
+
+use super::basis::BasisJet;
+use super::vector::lift;
+use crate::num::Real;
+
+/// A control net: `rows × cols` points stored row by row, optional weights.
+#[derive(Debug, Clone, PartialEq)]
+pub(crate) struct Net {
+    pub rows: usize,
+    pub cols: usize,
+    pub points: Vec<[f64; 3]>,
+    pub weights: Option<Vec<f64>>,
+}
+
+/// `(ku, kv)` derivative orders in jet order `s, s_u, s_v, s_uu, s_uv, s_vv`.
+pub(crate) const ORDERS: [(usize, usize); 6] = [(0, 0), (1, 0), (0, 1), (2, 0), (1, 1), (0, 2)];
+
+fn jet_len(order: usize) -> usize {
+    match order {
+        0 => 1,
+        1 => 3,
+        _ => 6,
+    }
+}
+
+/// The homogeneous partial derivatives `H[(ku, kv)]` in jet order, of dimension `D`
+/// (3 for polynomial nets, 4 = `(wP, w)` for rational ones).
+fn homogeneous<T: Real, const D: usize>(
+    bu: &BasisJet<T>,
+    first_u: usize,
+    bv: &BasisJet<T>,
+    first_v: usize,
+    order: usize,
+    point: impl Fn(usize, usize) -> [T; D],
+) -> Vec<[T; D]> {
+    let zero = bu.get(0, 0).zero_like();
+    let (pu, pv) = (bu.degree, bv.degree);
+    let ku_max = order.min(2);
+    let zeros = || -> [T; D] { std::array::from_fn(|_| zero.clone()) };
+    // rows_sum[i][k] = Σ_j N_j^{(k)}(u) P(first_v + i, first_u + j), k ≤ 2.
+    let mut rows_sum: Vec<[[T; D]; 3]> = Vec::with_capacity(pv + 1);
+    for i in 0..=pv {
+        let mut acc: [[T; D]; 3] = std::array::from_fn(|_| zeros());
+        for j in 0..=pu {
+            let p = point(first_v + i, first_u + j);
+            for (k, a) in acc.iter_mut().enumerate().take(ku_max + 1) {
+                let n = bu.get(k, j);
+                for c in 0..D {
+                    a[c] = a[c].clone() + n.clone() * &p[c];
+                }
+            }
+        }
+        rows_sum.push(acc);
+    }
+    ORDERS[..jet_len(order)]
+        .iter()
+        .map(|&(ku, kv)| {
+            let mut acc = zeros();
+            for (i, r) in rows_sum.iter().enumerate() {
+                let n = bv.get(kv, i);
+                for c in 0..D {
+                    acc[c] = acc[c].clone() + n.clone() * &r[ku][c];
+                }
+            }
+            acc
+        })
+        .collect()
+}
+
+/// The jet of the patch on the spans whose first non-zero functions are `first_u`
+/// (column) and `first_v` (row), from the basis jets there.
+pub(crate) fn tensor_jet<T: Real>(
+    net: &Net,
+    bu: &BasisJet<T>,
+    first_u: usize,
+    bv: &BasisJet<T>,
+    first_v: usize,
+    order: usize,
+) -> Vec<[T; 3]> {
+    let like = bu.get(0, 0);
+    let Some(weights) = &net.weights else {
+        return homogeneous(bu, first_u, bv, first_v, order, |i, j| {
+            lift(like, &net.points[i * net.cols + j])
+        });
+    };
+    let h = homogeneous(bu, first_u, bv, first_v, order, |i, j| {
+        let k = i * net.cols + j;
+        let w = weights[k];
+        let p = net.points[k];
+        // w·P is formed in the number type, so the product is enclosed, not rounded.
+        let wt = like.lift(w);
+        [
+            wt.clone() * like.lift(p[0]),
+            wt.clone() * like.lift(p[1]),
+            wt.clone() * like.lift(p[2]),
+            wt,
+        ]
+    });
+    quotient(&h)
+}
+
+/// The quotient rule (module doc) on the homogeneous jet `[A | W]`.
+pub(crate) fn quotient<T: Real>(h: &[[T; 4]]) -> Vec<[T; 3]> {
+    let w = &h[0][3];
+    let a = |k: usize| -> [T; 3] { [h[k][0].clone(), h[k][1].clone(), h[k][2].clone()] };
+    let wd = |k: usize| &h[k][3];
+    let div = |x: [T; 3]| -> [T; 3] { x.map(|c| c / w) };
+    let s = div(a(0));
+    let mut out = vec![s.clone()];
+    if h.len() >= 3 {
+        let s_u = div(std::array::from_fn(|c| {
+            h[1][c].clone() - wd(1).clone() * &s[c]
+        }));
+        let s_v = div(std::array::from_fn(|c| {
+            h[2][c].clone() - wd(2).clone() * &s[c]
+        }));
+        if h.len() >= 6 {
+            let two = w.lift(2.0);
+            let s_uu = div(std::array::from_fn(|c| {
+                h[3][c].clone() - two.clone() * wd(1) * &s_u[c] - wd(3).clone() * &s[c]
+            }));
+            let s_uv = div(std::array::from_fn(|c| {
+                h[4][c].clone()
+                    - wd(1).clone() * &s_v[c]
+                    - wd(2).clone() * &s_u[c]
+                    - wd(4).clone() * &s[c]
+            }));
+            let s_vv = div(std::array::from_fn(|c| {
+                h[5][c].clone() - two.clone() * wd(2) * &s_v[c] - wd(5).clone() * &s[c]
+            }));
+            out.extend([s_u, s_v, s_uu, s_uv, s_vv]);
+        } else {
+            out.extend([s_u, s_v]);
+        }
+    }
+    out
+}
