@@ -70,8 +70,12 @@ pub trait Curve<const D: usize> {
     /// The domain's bounds are the nearest doubles to irrational values (`2π`, an arc's
     /// angle), not the exact ends: the certifier then covers them outward by one ulp,
     /// so that no solution between the double and the exact end is missed.
+    ///
+    /// Default: either bound is the double nearest to a multiple `kπ/2`
+    /// (`0 < |k| ≤ 4`), the ends of angular parameters.
     fn domain_rounded(&self) -> bool {
-        false
+        let (lo, hi) = self.domain();
+        is_angle_bound(lo) || is_angle_bound(hi)
     }
 
     /// The value and derivatives up to `order` (at most 3) at `t`:
@@ -124,4 +128,10 @@ pub enum StepHint {
     Angular { rate: f64 },
     /// One step covers the whole domain (line, segment: `Δt = t_max − t_min`).
     Whole,
+}
+
+/// `x` is the double nearest to `kπ/2` for some `0 < |k| ≤ 4` (`±π/2`, `±π`, `±3π/2`,
+/// `±2π`): a domain bound that stands for an irrational end.
+pub fn is_angle_bound(x: f64) -> bool {
+    (1..=4).any(|k| x.abs() == k as f64 * std::f64::consts::FRAC_PI_2 && x != 0.0)
 }

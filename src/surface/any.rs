@@ -56,6 +56,9 @@ impl Surface for AnySurface {
     fn is_closed(&self) -> [bool; 2] {
         each_surface!(self, s => s.is_closed())
     }
+    fn domain_rounded(&self) -> [bool; 2] {
+        each_surface!(self, s => s.domain_rounded())
+    }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         each_surface!(self, s => s.jet(u, v, order))
     }

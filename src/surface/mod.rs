@@ -60,8 +60,15 @@ pub trait Surface {
     /// (`2π`, `±π/2`, the `v`-range of a torus with `r > R`), not the exact ends; the
     /// certifier then covers them outward by one ulp (a sphere's pole is at the exact
     /// `π/2`, beyond the double `1.5707963267948966`).
+    ///
+    /// Default: per direction, either bound is the double nearest to a multiple of
+    /// `π/2` ([`crate::curve::is_angle_bound`]).
     fn domain_rounded(&self) -> [bool; 2] {
-        [false, false]
+        let (u, v) = self.domain();
+        let rounded = |[lo, hi]: [f64; 2]| {
+            crate::curve::is_angle_bound(lo) || crate::curve::is_angle_bound(hi)
+        };
+        [rounded(u), rounded(v)]
     }
 
     /// Value and partial derivatives up to `order` (0, 1 or 2) at `(u, v)`, in the

@@ -72,6 +72,10 @@ impl Surface for Torus {
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
+    /// Both ends are angles: `2π`, and for `r ≥ R` the computed `±(π − arccos(R/r))`.
+    fn domain_rounded(&self) -> [bool; 2] {
+        [true, true]
+    }
     fn is_closed(&self) -> [bool; 2] {
         let ring = self.minor < self.major;
         [
