@@ -3,7 +3,7 @@
 //! net row `i` ↔ `v`, position `j` ↔ `u`, optional positive weights. Domain
 //! `[knots_u[p], knots_u[cols]] × [knots_v[q], knots_v[rows]]` (0-based).
 //!
-//! An interval box is evaluated in the centred form of [`super::taylor`] (tight on small
+//! An interval box is evaluated in the centred form of `surface::taylor` (tight on small
 //! boxes). A parameter interval that straddles knots is evaluated on every span it
 //! touches and the results are joined ([`super::sets::hull`]), so the jet encloses the
 //! surface over the whole box; a parameter exactly on a knot takes the right span, as
