@@ -167,10 +167,13 @@ impl NurbsSurface {
     }
 
     fn evaluate<T: Real>(&self, u: &T, v: &T, order: usize, centred: bool) -> Vec<[T; 3]> {
-        let ((cu, du), (cv, dv)) = if centred {
+        let ((cu, du, iu), (cv, dv, iv)) = if centred {
             (centre(u), centre(v))
         } else {
-            ((u.clone(), u.zero_like()), (v.clone(), v.zero_like()))
+            (
+                (u.clone(), u.zero_like(), true),
+                (v.clone(), v.zero_like(), true),
+            )
         };
         let [p, q] = self.degrees;
         let mut result: Option<Vec<[T; 3]>> = None;
@@ -179,7 +182,17 @@ impl NurbsSurface {
             for su in self.spans(0, u) {
                 let ju = self.basis(0, su, u, centred.then_some(&cu), order);
                 let jet = if centred {
-                    taylor_tensor_jet(&self.net, &ju, &du, su - p, &jv, &dv, sv - q, order)
+                    taylor_tensor_jet(
+                        &self.net,
+                        &ju,
+                        &du,
+                        su - p,
+                        &jv,
+                        &dv,
+                        sv - q,
+                        order,
+                        iu && iv,
+                    )
                 } else {
                     tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
                 };
