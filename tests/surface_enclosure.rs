@@ -7,7 +7,7 @@
 
 mod surface_support;
 
-use geocert::num::{Interval, MpfrInterval, Real};
+use geocert::num::{Interval, IntervalLike, MpfrInterval, Real};
 use geocert::surface::Surface;
 use surface_support::{nurbs_bicubic, zoo, Rng, Visit};
 
@@ -162,7 +162,6 @@ fn patch_enclosures_are_tight_on_small_boxes() {
     // s, s_u, s_v exceeds the range (sampled on a grid) by O(w²) only; the direct sums
     // overestimate by a constant factor however small the box (checked to show the
     // difference is real).
-    use geocert::num::IntervalLike;
     use surface_support::bezier_rational;
     let nurbs = nurbs_bicubic();
     let bezier = bezier_rational();
@@ -208,4 +207,40 @@ fn patch_enclosures_are_tight_on_small_boxes() {
         }
     }
     assert!(direct_looser >= 20, "{direct_looser}");
+}
+
+#[test]
+fn boxes_narrower_than_a_double_spacing_are_enclosed() {
+    // An MPFR box strictly between two doubles: its rounded midpoint lies outside it, so
+    // the mean value form must not be used (it would need the segment to the centre).
+    use rug::Float;
+    let s = nurbs_bicubic();
+    let prec = 256;
+    for (x, y) in [(0.3, 0.7), (0.61, -0.2), (0.05, 1.9)] {
+        let off = |base: f64, k: i32| {
+            let mut f = Float::with_val(prec, base);
+            f += Float::with_val(prec, 2.0f64.powi(k));
+            f
+        };
+        let (ulo, uhi) = (off(x, -70), off(x, -69));
+        let (vlo, vhi) = (off(y, -71), off(y, -70));
+        let bu = MpfrInterval::from_float_bounds(&ulo, &uhi, prec);
+        let bv = MpfrInterval::from_float_bounds(&vlo, &vhi, prec);
+        let inner_u = MpfrInterval::from_float(&off(x, -70).clone(), prec)
+            + MpfrInterval::point(2.0f64.powi(-71), prec);
+        let inner_v = MpfrInterval::from_float(&off(y, -71), prec)
+            + MpfrInterval::point(2.0f64.powi(-72), prec);
+        let boxed = s.jet(&bu, &bv, 2);
+        let inner = s.jet(&inner_u, &inner_v, 2);
+        for (e, (b, i)) in boxed.iter().zip(&inner).enumerate() {
+            for c in 0..3 {
+                assert!(
+                    i[c].is_subset(&b[c]),
+                    "entry {e}.{c}: {:?} ⊄ {:?}",
+                    i[c],
+                    b[c]
+                );
+            }
+        }
+    }
 }

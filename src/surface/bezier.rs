@@ -70,9 +70,9 @@ impl Surface for BezierSurface {
             return tensor_jet(&self.net, &bu, 0, &bv, 0, order);
         }
         // An interval box: the centred form (super::taylor).
-        let ((cu, du), (cv, dv)) = (centre(u), centre(v));
+        let ((cu, du, iu), (cv, dv, iv)) = (centre(u), centre(v));
         let bu = bernstein_jet(pu, &cu, pu);
         let bv = bernstein_jet(pv, &cv, pv);
-        taylor_tensor_jet(&self.net, &bu, &du, 0, &bv, &dv, 0, order)
+        taylor_tensor_jet(&self.net, &bu, &du, 0, &bv, &dv, 0, order, iu && iv)
     }
 }

@@ -3,7 +3,7 @@
 //! net row `i` ↔ `v`, position `j` ↔ `u`, optional positive weights. Domain
 //! `[knots_u[p], knots_u[cols]] × [knots_v[q], knots_v[rows]]` (0-based).
 //!
-//! An interval box is evaluated in the centred form of [`super::taylor`] (tight on small
+//! An interval box is evaluated in the centred form of `surface::taylor` (tight on small
 //! boxes). A parameter interval that straddles knots is evaluated on every span it
 //! touches and the results are joined ([`super::sets::hull`]), so the jet encloses the
 //! surface over the whole box; a parameter exactly on a knot takes the right span, as
@@ -167,10 +167,13 @@ impl NurbsSurface {
     }
 
     fn evaluate<T: Real>(&self, u: &T, v: &T, order: usize, centred: bool) -> Vec<[T; 3]> {
-        let ((cu, du), (cv, dv)) = if centred {
+        let ((cu, du, iu), (cv, dv, iv)) = if centred {
             (centre(u), centre(v))
         } else {
-            ((u.clone(), u.zero_like()), (v.clone(), v.zero_like()))
+            (
+                (u.clone(), u.zero_like(), true),
+                (v.clone(), v.zero_like(), true),
+            )
         };
         let [p, q] = self.degrees;
         let mut result: Option<Vec<[T; 3]>> = None;
@@ -179,7 +182,17 @@ impl NurbsSurface {
             for su in self.spans(0, u) {
                 let ju = self.basis(0, su, u, centred.then_some(&cu), order);
                 let jet = if centred {
-                    taylor_tensor_jet(&self.net, &ju, &du, su - p, &jv, &dv, sv - q, order)
+                    taylor_tensor_jet(
+                        &self.net,
+                        &ju,
+                        &du,
+                        su - p,
+                        &jv,
+                        &dv,
+                        sv - q,
+                        order,
+                        iu && iv,
+                    )
                 } else {
                     tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
                 };

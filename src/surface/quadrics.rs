@@ -1,7 +1,7 @@
 //! Quadrics of OPERATIONS.md §1.6 with the parametrisations and default domains of
 //! spec/CASES.md: sphere, ellipsoid, hyperboloids of one and two sheets, the elliptic
 //! paraboloid (polar form), elliptic cylinder and circular cone. All share the formula of
-//! [`super::rotational`]; the rectangular paraboloids ([Y 3.2.12], [Y 3.2.13]) are
+//! `surface::rotational`; the rectangular paraboloids ([Y 3.2.12], [Y 3.2.13]) are
 //! [`super::plane::ParaboloidRect`].
 //!
 //! Every constructor validates its input (typed errors naming `center`/`origin`,

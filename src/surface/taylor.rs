@@ -31,12 +31,19 @@ pub(crate) fn is_point<T: Real>(t: &T) -> bool {
     lo == hi
 }
 
-/// The centre `m` of a parameter interval as an exact point of the number type, and
-/// `δ = t − m` (an enclosure of the offsets; exact for f64).
-pub(crate) fn centre<T: Real>(t: &T) -> (T, T) {
-    let m = t.lift(t.mid());
+/// The centre `m` of a parameter interval as an exact point of the number type,
+/// `δ = t − m` (an enclosure of the offsets; exact for f64), and whether `m` is proven
+/// to lie in `t`: strictly between the outward f64 bounds (a double strictly above
+/// `round_down(lo)` is at least `lo`), or `t` is that double. (A very narrow MPFR
+/// interval can lie between two doubles, so its rounded midpoint can lie outside it;
+/// the Taylor form does not mind, the mean value form does.)
+pub(crate) fn centre<T: Real>(t: &T) -> (T, T, bool) {
+    let x = t.mid();
+    let (lo, hi) = t.bounds();
+    let inside = (lo < x && x < hi) || (lo == hi && x == lo);
+    let m = t.lift(x);
     let delta = t.clone() - &m;
-    (m, delta)
+    (m, delta, inside)
 }
 
 /// `k!` as a double (exact for the degrees used here).
@@ -209,7 +216,9 @@ fn centred_homogeneous<T: Real, const D: usize>(
 /// derivatives to first order in the box width (`W_u·s` and `A_u` vary together), so
 /// `s`, `s_u`, `s_v` are also enclosed by the mean value form
 /// `E(m) + E_u(box)·δ_u + E_v(box)·δ_v` (valid on one polynomial piece: `E` is smooth
-/// there) and the two enclosures are intersected ([`super::sets::meet`]).
+/// there; and only when the centre lies in the box, `centre_inside`, so that the segment
+/// from `m` to any point stays in it) and the two enclosures are intersected
+/// ([`super::sets::meet`]).
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn taylor_tensor_jet<T: Real>(
     net: &Net,
@@ -220,6 +229,7 @@ pub(crate) fn taylor_tensor_jet<T: Real>(
     delta_v: &T,
     first_v: usize,
     order: usize,
+    centre_inside: bool,
 ) -> Vec<[T; 3]> {
     let like = delta_u;
     let (reference, mut jet) = match &net.weights {
@@ -246,7 +256,7 @@ pub(crate) fn taylor_tensor_jet<T: Real>(
                     ]
                 });
             let mut jet = quotient(&h);
-            if order >= 1 {
+            if order >= 1 && centre_inside {
                 let centre = quotient(&at_centre);
                 let mvf = |e: usize, eu: usize, ev: usize, jet: &[[T; 3]]| -> [T; 3] {
                     std::array::from_fn(|c| {
@@ -259,8 +269,12 @@ pub(crate) fn taylor_tensor_jet<T: Real>(
                 jet[1] = mvf(1, 3, 4, &jet);
                 jet[2] = mvf(2, 4, 5, &jet);
                 jet[0] = mvf(0, 1, 2, &jet);
-                jet.truncate(if order == 1 { 3 } else { 6 });
             }
+            jet.truncate(match order {
+                0 => 1,
+                1 => 3,
+                _ => 6,
+            });
             (reference, jet)
         }
     };
