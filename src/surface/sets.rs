@@ -1,49 +1,21 @@
-//! Set operations on enclosures for generic code over [`Real`], which has none: the
-//! hull (union) and intersection of two enclosures of the same quantity, for the
-//! interval types of this crate (found by downcasting; [`Real`] is `'static`).
+//! Set operations on enclosures for generic code over [`Real`]: the hull (union) and
+//! intersection of two enclosures of the same quantity, through [`Real::hull_with`]
+//! and [`Real::restrict_to`], so they work for every number type (f64, intervals, and
+//! the certifier's dual and smoothness-guarded wrappers).
 //!
-//! For `f64` (point evaluation, which proves nothing) the first argument is returned.
+//! For `f64` (point evaluation, which proves nothing) they return a point.
 
-use std::any::Any;
-
-use crate::num::{Interval, IntervalLike, MpfrInterval, Real};
-
-fn combine<T: Real>(
-    a: &T,
-    b: &T,
-    f64_op: fn(&Interval, &Interval) -> Interval,
-    mpfr_op: fn(&MpfrInterval, &MpfrInterval) -> MpfrInterval,
-) -> T {
-    let mut out = a.clone();
-    let any_out: &mut dyn Any = &mut out;
-    if let Some(x) = any_out.downcast_mut::<Interval>() {
-        if let Some(y) = (b as &dyn Any).downcast_ref::<Interval>() {
-            *x = f64_op(x, y);
-        }
-    } else if let Some(x) = any_out.downcast_mut::<MpfrInterval>() {
-        if let Some(y) = (b as &dyn Any).downcast_ref::<MpfrInterval>() {
-            *x = mpfr_op(x, y);
-        }
-    } else if !any_out.is::<f64>() {
-        panic!("surface::sets: unsupported number type");
-    }
-    out
-}
+use crate::num::Real;
 
 /// An enclosure of the union of two enclosures (the interval hull).
-///
-/// # Panics
-/// For a [`Real`] type other than `f64`, [`Interval`] and [`MpfrInterval`] (add it
-/// here; no user input reaches this).
 pub fn hull<T: Real>(a: &T, b: &T) -> T {
-    combine(a, b, IntervalLike::hull, IntervalLike::hull)
+    a.hull_with(b)
 }
 
-/// The intersection of two enclosures of the same quantity (an enclosure of it). Empty
-/// only if one of them was wrong — never for correct enclosures.
-///
-/// # Panics
-/// As [`hull`].
+/// An enclosure of the intersection of two enclosures of the same quantity: `a`
+/// restricted to the outward f64 bounds of `b` (a superset of `b`, so the result
+/// still contains the quantity). Empty only if one of them was wrong.
 pub fn meet<T: Real>(a: &T, b: &T) -> T {
-    combine(a, b, IntervalLike::intersection, IntervalLike::intersection)
+    let (lo, hi) = b.bounds();
+    a.restrict_to(lo, hi)
 }
