@@ -171,6 +171,14 @@ fn build_inner<T: FromNum>(spec: &ObjectSpec) -> Result<Object<T>, BuildError> {
             }
             .into())
         }
+        // Curved objects are solved by `io::curved`, never by the linear kernel.
+        ObjectSpec::Curve3(_) | ObjectSpec::Curve2(_) | ObjectSpec::Surface(_) => {
+            return Err(GeomError::Unsupported {
+                field: "type".into(),
+                reason: "this operation does not take curved objects in this build".into(),
+            }
+            .into())
+        }
     })
 }
 

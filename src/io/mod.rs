@@ -3,6 +3,7 @@
 
 mod build;
 pub mod case;
+pub mod curved;
 mod linear_out;
 pub mod number;
 pub mod objects;

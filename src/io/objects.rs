@@ -73,7 +73,25 @@ pub enum ObjectSpec {
     Line2(Line2Spec),
     Segment2(Segment2Spec),
     Polyhedron(PolyhedronSpec),
+    /// A space curve other than a line or segment (doubles only).
+    Curve3(crate::io::shapes::Curve3Spec),
+    /// A plane curve other than `line2` / `segment2`, or `conic2` (doubles only).
+    Curve2(crate::io::shapes::Curve2Spec),
+    /// A surface other than a plane (doubles only).
+    Surface(crate::io::shapes::surface::SurfaceSpec),
 }
+
+/// The curve types read by [`crate::io::shapes::parse_curve3`].
+const CURVE3_TYPES: &[&str] = &[
+    "circle",
+    "ellipse",
+    "hyperbola",
+    "parabola",
+    "helix",
+    "bezier",
+    "nurbs_curve",
+    "polyline",
+];
 
 /// The object types this build understands, as written in `type`.
 pub const OBJECT_TYPES: &[&str] = &[
@@ -83,6 +101,10 @@ pub const OBJECT_TYPES: &[&str] = &[
     "line2",
     "segment2",
     "polyhedron",
+    "circle, ellipse, hyperbola, parabola, helix, bezier, nurbs_curve, polyline",
+    "circle2, ellipse2, bezier2, nurbs_curve2, polyline2, conic2",
+    "sphere, ellipsoid, hyperboloid1, hyperboloid2, paraboloid, cylinder, cone, torus",
+    "bezier_surface, nurbs_surface",
 ];
 
 impl ObjectSpec {
@@ -95,6 +117,9 @@ impl ObjectSpec {
             ObjectSpec::Line2(_) => "line2",
             ObjectSpec::Segment2(_) => "segment2",
             ObjectSpec::Polyhedron(_) => "polyhedron",
+            ObjectSpec::Curve3(c) => c.type_name(),
+            ObjectSpec::Curve2(c) => c.type_name(),
+            ObjectSpec::Surface(c) => c.type_name(),
         }
     }
 }
@@ -102,6 +127,7 @@ impl ObjectSpec {
 /// Read one object from its JSON value, naming errors below `prefix`
 /// (`objects[1].dir[2]`). The `type` field selects the fields that are allowed.
 pub fn parse_object(mut value: serde_json::Value, prefix: &str) -> Result<ObjectSpec, GeomError> {
+    let original = value.clone();
     let type_field = format!("{prefix}.type");
     let Some(map) = value.as_object_mut() else {
         return Err(GeomError::Format {
@@ -131,6 +157,15 @@ pub fn parse_object(mut value: serde_json::Value, prefix: &str) -> Result<Object
         "line2" => deserialize_at(value, prefix).map(ObjectSpec::Line2),
         "segment2" => deserialize_at(value, prefix).map(ObjectSpec::Segment2),
         "polyhedron" => deserialize_at(value, prefix).map(ObjectSpec::Polyhedron),
+        other if crate::io::shapes::surface::SURFACE_TYPES.contains(&other) => {
+            crate::io::shapes::surface::parse_surface(&original, prefix).map(ObjectSpec::Surface)
+        }
+        other if other.ends_with('2') => {
+            crate::io::shapes::parse_curve2(original, prefix).map(ObjectSpec::Curve2)
+        }
+        _ if CURVE3_TYPES.contains(&type_name.as_str()) => {
+            crate::io::shapes::parse_curve3(original, prefix).map(ObjectSpec::Curve3)
+        }
         other => Err(GeomError::Unsupported {
             field: type_field,
             reason: format!(

@@ -45,6 +45,9 @@ pub fn solve_case(read: ReadCase) -> CaseResult {
 }
 
 fn solve(case: &Case) -> Result<CaseResult, GeomError> {
+    if let Some(result) = super::curved::solve_curved(case) {
+        return result;
+    }
     if !case.options.exact {
         match solve_in::<f64>(case) {
             Err(BuildError::NeedsRational) => {}

@@ -1,0 +1,531 @@
+//! Solving cases with curved objects (OPERATIONS.md §3–§7 on curves and surfaces):
+//! point → curve / surface projections (all feet, nearest, along a direction), plane
+//! curve ∩ plane curve, curve ∩ surface, three surfaces, and a point against a closed
+//! sphere, ellipsoid or torus. Initial guesses come from the walks of §2; every answer
+//! is certified by [`crate::ops::certified`] (or decided exactly for `classify`).
+
+use super::case::{Case, Op};
+use super::number::Num;
+use super::objects::{LineSpec, ObjectSpec, SegmentSpec};
+use super::result::{Bounds, CaseResult, PointOut};
+use super::shapes::PlaneShape;
+use crate::certificate::{Certified, Status};
+use crate::curve::any::AnyCurve3;
+use crate::curve::lines::{Line, Segment};
+use crate::curve::Curve;
+use crate::error::GeomError;
+use crate::num::Interval;
+use crate::ops::certified::{CertifiedPoint, Options};
+use crate::ops::closed_surface::{classify_point_closed_surface, ClosedSurface};
+use crate::ops::float::Precision;
+use crate::ops::{intersect, project};
+use crate::surface::any::AnySurface;
+use crate::surface::Surface;
+use crate::walk::surface::{SurfaceWalk, SurfaceWalkOptions};
+use crate::walk::{CurveWalk, WalkOptions};
+use std::f64::consts::PI;
+
+/// `Some(result)` when the case involves a curved object, `None` for the linear kernel.
+pub fn solve_curved(case: &Case) -> Option<Result<CaseResult, GeomError>> {
+    let curved = |o: &ObjectSpec| {
+        matches!(
+            o,
+            ObjectSpec::Curve3(_) | ObjectSpec::Curve2(_) | ObjectSpec::Surface(_)
+        )
+    };
+    let any = case.objects.iter().any(curved)
+        || case.onto.as_ref().is_some_and(curved)
+        || case.shell.as_ref().is_some_and(curved);
+    any.then(|| solve(case))
+}
+
+fn solve(case: &Case) -> Result<CaseResult, GeomError> {
+    let precision = precision(case)?;
+    let opts = Options {
+        max_boxes: case.options.max_boxes.map_or(20_000, |b| b as usize),
+        max_bits: case.options.max_bits.unwrap_or(512),
+        min_width: 0.0,
+    };
+    match case.op {
+        Op::Project => project_case(case, &precision, &opts),
+        Op::Intersect => intersect_case(case, &precision, &opts),
+        Op::Classify => classify_case(case),
+        other => Err(unsupported(
+            "op",
+            format!("`{}` is not implemented for curved objects", other.as_str()),
+        )),
+    }
+}
+
+fn unsupported(field: &str, reason: String) -> GeomError {
+    GeomError::Unsupported {
+        field: field.into(),
+        reason,
+    }
+}
+
+fn precision(case: &Case) -> Result<Precision, GeomError> {
+    let mut p = Precision::default();
+    if let Some(eps) = &case.options.tolerance {
+        p.eps = eps.0;
+    }
+    if let Some(delta) = &case.options.equal_tolerance {
+        p.delta = delta.0;
+    }
+    let valid = |x: f64| x > 0.0 && x < 1.0;
+    if !valid(p.eps) || !valid(p.delta) {
+        return Err(GeomError::InvalidValue {
+            field: "options.tolerance".into(),
+            reason: format!(
+                "tolerances must lie in (0, 1), found ε = {}, δ = {}",
+                p.eps, p.delta
+            ),
+        });
+    }
+    Ok(p)
+}
+
+fn doubles<const D: usize>(xs: &[Num], field: &str) -> Result<[f64; D], GeomError> {
+    if xs.len() != D {
+        return Err(GeomError::CountMismatch {
+            field: field.into(),
+            expected: format!("{D} coordinates"),
+            found: xs.len().to_string(),
+        });
+    }
+    let mut out = [0.0; D];
+    for (i, x) in xs.iter().enumerate() {
+        let f = format!("{field}[{i}]");
+        out[i] = x.as_double().ok_or_else(|| {
+            unsupported(
+                &f,
+                "curved operations take doubles, not exact strings".into(),
+            )
+        })?;
+        crate::error::require_finite(&f, out[i])?;
+    }
+    Ok(out)
+}
+
+fn curve_samples<const D: usize, C: Curve<D>>(c: &C) -> Result<Vec<(f64, f64)>, GeomError> {
+    Ok(CurveWalk::new(c, WalkOptions::default())?
+        .map(|s| (s.t, s.step))
+        .collect())
+}
+
+fn surface_nodes<S: Surface>(s: &S) -> Result<Vec<[f64; 4]>, GeomError> {
+    Ok(SurfaceWalk::new(s, SurfaceWalkOptions::new(PI / 10.0))?
+        .map(|n| [n.u, n.v, n.du, n.dv])
+        .collect())
+}
+
+fn at<T>(r: Result<T, GeomError>, field: &str) -> Result<T, GeomError> {
+    r.map_err(|e| e.at(field))
+}
+
+fn build_surface(spec: &ObjectSpec, field: &str) -> Result<Option<AnySurface>, GeomError> {
+    match spec {
+        ObjectSpec::Surface(s) => at(s.build(), field).map(Some),
+        _ => Ok(None),
+    }
+}
+
+/// A space curve from a curved spec, or from a `line` / `segment`; a line without a
+/// range is cut to the part that can meet `bound` (a certified box of a surface).
+fn build_curve3(
+    spec: &ObjectSpec,
+    field: &str,
+    bound: Option<&[Interval; 3]>,
+) -> Result<Option<AnyCurve3>, GeomError> {
+    Ok(Some(match spec {
+        ObjectSpec::Curve3(c) => at(c.build(), field)?,
+        ObjectSpec::Segment(SegmentSpec { a, b }) => {
+            let (a, b) = (
+                doubles::<3>(a, &format!("{field}.a"))?,
+                doubles::<3>(b, &format!("{field}.b"))?,
+            );
+            AnyCurve3::Segment(at(Segment::new(a, b, None), field)?)
+        }
+        ObjectSpec::Line(LineSpec { origin, dir, range }) => {
+            let o = doubles::<3>(origin, &format!("{field}.origin"))?;
+            let d = doubles::<3>(dir, &format!("{field}.dir"))?;
+            let range = match range {
+                Some(r) => {
+                    let r = doubles::<2>(r, &format!("{field}.range"))?;
+                    (r[0], r[1])
+                }
+                None => reach(&o, &d, bound).ok_or_else(|| {
+                    unsupported(
+                        &format!("{field}.range"),
+                        "the line needs a `range` here: the other object is unbounded".into(),
+                    )
+                })?,
+            };
+            AnyCurve3::Line(at(Line::new(o, d, Some(range)), field)?)
+        }
+        _ => return Ok(None),
+    }))
+}
+
+/// The parameters of `o + t·d` inside the box `bound` (slab method), widened outward so
+/// that rounding cannot cut a hit off: every point of the line in the box has its `t`
+/// in the range. `Some((0, 0))`-like tiny ranges for a miss are fine (the solver then
+/// proves there is nothing).
+fn reach(o: &[f64; 3], d: &[f64; 3], bound: Option<&[Interval; 3]>) -> Option<(f64, f64)> {
+    let b = bound?;
+    let (mut lo, mut hi) = (f64::NEG_INFINITY, f64::INFINITY);
+    for i in 0..3 {
+        if !(b[i].lo().is_finite() && b[i].hi().is_finite()) {
+            return None;
+        }
+        if d[i] == 0.0 {
+            continue;
+        }
+        let di = Interval::point(d[i]);
+        let t1 = (Interval::point(b[i].lo()) - Interval::point(o[i])) / di;
+        let t2 = (Interval::point(b[i].hi()) - Interval::point(o[i])) / di;
+        let span = t1.hull(&t2);
+        lo = lo.max(span.lo());
+        hi = hi.min(span.hi());
+    }
+    if !(lo.is_finite() && hi.is_finite()) {
+        return None;
+    }
+    let pad = 1e-9 * (hi - lo).abs().max(lo.abs()).max(hi.abs()).max(1.0);
+    Some(if lo <= hi {
+        (lo - pad, hi + pad)
+    } else {
+        (lo - pad, lo + pad)
+    })
+}
+
+/// A certified box of the whole surface (its point over the whole parameter domain).
+fn surface_box<S: Surface>(s: &S) -> [Interval; 3] {
+    let ([u0, u1], [v0, v1]) = s.domain();
+    let mut b = s.jet(
+        &Interval::from_bounds(u0, u1),
+        &Interval::from_bounds(v0, v1),
+        0,
+    );
+    b.swap_remove(0)
+}
+
+fn bounds<const D: usize>(b: &[Interval; D]) -> Vec<Bounds> {
+    b.iter().map(|x| [x.lo(), x.hi()]).collect()
+}
+
+/// The result record of certified points; `params` splits each root's parameters by
+/// object (`sizes`).
+fn points_result<const D: usize>(
+    case: &Case,
+    kind_if_any: &'static str,
+    c: Certified<Vec<CertifiedPoint<D>>>,
+    sizes: &[usize],
+    distance_to: Option<[f64; D]>,
+) -> CaseResult {
+    let kind = if c.value.is_empty() {
+        "empty"
+    } else {
+        kind_if_any
+    };
+    let mut r = CaseResult::certified(case.id.clone(), kind, &c);
+    let points = c
+        .value
+        .iter()
+        .map(|p| {
+            let mut params = Vec::new();
+            let mut param_box = Vec::new();
+            let mut k = 0;
+            for &n in sizes {
+                params.push(p.root.params[k..k + n].to_vec());
+                param_box.push(
+                    p.root.enclosure[k..k + n]
+                        .iter()
+                        .map(|x| [x.lo(), x.hi()])
+                        .collect(),
+                );
+                k += n;
+            }
+            let singular = p.root.status == Status::VerifiedSingular;
+            PointOut {
+                xyz: p.point.to_vec(),
+                params,
+                bounds: bounds(&p.point_box),
+                param_box: Some(param_box),
+                multiplicity: if singular { 2 } else { 1 },
+                tangent: singular,
+                distance: distance_to.map(|q| {
+                    p.point
+                        .iter()
+                        .zip(q)
+                        .map(|(a, b)| (a - b) * (a - b))
+                        .sum::<f64>()
+                        .sqrt()
+                }),
+                ..Default::default()
+            }
+        })
+        .collect();
+    r.points = Some(points);
+    r
+}
+
+fn project_case(
+    case: &Case,
+    precision: &Precision,
+    opts: &Options,
+) -> Result<CaseResult, GeomError> {
+    let onto = case.onto.as_ref().ok_or_else(|| GeomError::Format {
+        field: "onto".into(),
+        message: "missing field `onto`".into(),
+    })?;
+    let point = case.point.as_ref().ok_or_else(|| GeomError::Format {
+        field: "point".into(),
+        message: "missing field `point`".into(),
+    })?;
+    let mut result = match onto {
+        ObjectSpec::Surface(spec) => {
+            let s = at(spec.build(), "onto")?;
+            let p = doubles::<3>(point, "point")?;
+            let nodes = surface_nodes(&s)?;
+            if let Some(dir) = &case.direction {
+                let d = doubles::<3>(dir, "direction")?;
+                if d.iter().all(|&x| x == 0.0) {
+                    return Err(GeomError::ZeroDirection {
+                        field: "direction".into(),
+                    });
+                }
+                let ray = project::direction::ray_through(&s, &p, &d, &nodes);
+                let line = AnyCurve3::Line(Line::new(p, d, Some((ray.range[0], ray.range[1])))?);
+                let samples = curve_samples(&line)?;
+                let c = intersect::intersect_curve_surface(
+                    &s,
+                    &line,
+                    &samples,
+                    &nodes,
+                    PI / 10.0,
+                    precision,
+                    opts,
+                )?;
+                points_result(case, "points", c, &[2, 1], Some(p))
+            } else {
+                let c = project::project_point_on_surface(&s, &p, &nodes, precision, opts)?;
+                points_result(case, "points", c, &[2], Some(p))
+            }
+        }
+        ObjectSpec::Curve3(spec) => {
+            let c3 = at(spec.build(), "onto")?;
+            let p = doubles::<3>(point, "point")?;
+            let c =
+                project::project_point_on_curve(&c3, &p, &curve_samples(&c3)?, precision, opts)?;
+            points_result(case, "points", c, &[1], Some(p))
+        }
+        ObjectSpec::Curve2(spec) => {
+            let PlaneShape::Curve(c2) = at(spec.build(), "onto")? else {
+                return Err(unsupported(
+                    "onto",
+                    "projection onto an implicit `conic2` is not implemented".into(),
+                ));
+            };
+            let p = doubles::<2>(point, "point")?;
+            let c =
+                project::project_point_on_curve(&c2, &p, &curve_samples(&c2)?, precision, opts)?;
+            points_result(case, "points", c, &[1], Some(p))
+        }
+        _ => return Err(unsupported("onto", "expected a curved object".into())),
+    };
+    if case.nearest {
+        keep_nearest(&mut result);
+    }
+    Ok(result)
+}
+
+/// `nearest`: keep the point of smallest distance. It is proven nearest only when the
+/// answer is complete and its distance enclosure lies below every other's.
+fn keep_nearest(r: &mut CaseResult) {
+    let Some(points) = r.points.as_mut() else {
+        return;
+    };
+    if points.is_empty() {
+        return;
+    }
+    points.sort_by(|a, b| {
+        a.distance
+            .unwrap_or(f64::INFINITY)
+            .total_cmp(&b.distance.unwrap_or(f64::INFINITY))
+    });
+    let separated = points.len() == 1 || {
+        let gap = points[1].distance.unwrap_or(0.0) - points[0].distance.unwrap_or(0.0);
+        let width = |p: &PointOut| p.bounds.iter().map(|[a, b]| b - a).fold(0.0, f64::max);
+        gap > 4.0 * (width(&points[0]) + width(&points[1]))
+    };
+    points.truncate(1);
+    points[0].nearest = Some(true);
+    if !(separated && r.complete == Some(true)) {
+        r.status = Status::Undecided.as_str();
+        r.reason = Some("the nearest point is not proven: the search is incomplete or two feet are not separated".into());
+    }
+}
+
+fn intersect_case(
+    case: &Case,
+    precision: &Precision,
+    opts: &Options,
+) -> Result<CaseResult, GeomError> {
+    let field = |i: usize| format!("objects[{i}]");
+    match case.objects.as_slice() {
+        [ObjectSpec::Curve2(a), ObjectSpec::Curve2(b)] => {
+            let (PlaneShape::Curve(ca), PlaneShape::Curve(cb)) =
+                (at(a.build(), &field(0))?, at(b.build(), &field(1))?)
+            else {
+                return Err(unsupported("objects", "intersections with an implicit `conic2` are not implemented for the command line yet".into()));
+            };
+            let c = intersect::intersect_curves_2d(
+                &ca,
+                &cb,
+                &curve_samples(&ca)?,
+                &curve_samples(&cb)?,
+                precision,
+                opts,
+            )?;
+            Ok(points_result(case, "points", c, &[1, 1], None))
+        }
+        [a, b] => {
+            let (surface_first, s, curve_spec, cf) =
+                match (build_surface(a, &field(0))?, build_surface(b, &field(1))?) {
+                    (Some(s), None) => (true, s, b, field(1)),
+                    (None, Some(s)) => (false, s, a, field(0)),
+                    _ => {
+                        return Err(unsupported(
+                            "objects",
+                            "intersect of these curved objects is not implemented".into(),
+                        ))
+                    }
+                };
+            let bound = surface_box(&s);
+            let Some(curve) = build_curve3(curve_spec, &cf, Some(&bound))? else {
+                return Err(unsupported(&cf, "expected a space curve".into()));
+            };
+            let nodes = surface_nodes(&s)?;
+            let c = intersect::intersect_curve_surface(
+                &s,
+                &curve,
+                &curve_samples(&curve)?,
+                &nodes,
+                PI / 10.0,
+                precision,
+                opts,
+            )?;
+            // Parameters in input order: the root is (u, v, t).
+            let c = if surface_first {
+                c
+            } else {
+                c.map(|ps| {
+                    ps.into_iter()
+                        .map(|mut p| {
+                            p.root.params.rotate_right(1);
+                            p.root.enclosure.rotate_right(1);
+                            p
+                        })
+                        .collect()
+                })
+            };
+            let sizes: &[usize] = if surface_first { &[2, 1] } else { &[1, 2] };
+            Ok(points_result(case, "points", c, sizes, None))
+        }
+        [a, b, c] => {
+            let (Some(r), Some(s), Some(q)) = (
+                build_surface(a, &field(0))?,
+                build_surface(b, &field(1))?,
+                build_surface(c, &field(2))?,
+            ) else {
+                return Err(unsupported(
+                    "objects",
+                    "three-object intersections take three surfaces (or three planes)".into(),
+                ));
+            };
+            let (nr, ns, nq) = (surface_nodes(&r)?, surface_nodes(&s)?, surface_nodes(&q)?);
+            let c = intersect::intersect_three_surfaces(
+                (&r, &s, &q),
+                [&nr, &ns, &nq],
+                precision,
+                opts,
+            )?;
+            Ok(points_result(case, "points", c, &[2, 2, 2], None))
+        }
+        other => Err(GeomError::InvalidValue {
+            field: "objects".into(),
+            reason: format!("intersect takes 2 or 3 objects, found {}", other.len()),
+        }),
+    }
+}
+
+fn classify_case(case: &Case) -> Result<CaseResult, GeomError> {
+    let point = case.point.as_ref().ok_or_else(|| GeomError::Format {
+        field: "point".into(),
+        message: "missing field `point`".into(),
+    })?;
+    let p = doubles::<3>(point, "point")?;
+    let Some(ObjectSpec::Surface(spec)) = &case.shell else {
+        return Err(unsupported(
+            "shell",
+            "expected a polyhedron, sphere, ellipsoid or torus".into(),
+        ));
+    };
+    // Validate through the surface builder (typed errors naming the field).
+    at(spec.build(), "shell")?;
+    use super::shapes::surface::SurfaceSpec as S;
+    let closed = match spec {
+        S::Sphere(s) => ClosedSurface::Sphere {
+            center: s.center,
+            radius: s.radius,
+        },
+        S::Ellipsoid(e) => ClosedSurface::Ellipsoid {
+            center: e.center,
+            radii: [e.a, e.b, e.c],
+            axis: e.axis.unwrap_or([0.0, 0.0, 1.0]),
+            reference: e.reference,
+        },
+        S::Torus(t) => ClosedSurface::Torus {
+            center: t.center,
+            major: t.major,
+            minor: t.minor,
+            axis: t.axis,
+        },
+        other => {
+            return Err(unsupported(
+                "shell.type",
+                format!(
+                    "`{}` is not a closed shell (sphere, ellipsoid, torus or polyhedron)",
+                    other.type_name()
+                ),
+            ))
+        }
+    };
+    let c = classify_point_closed_surface(&p, &closed);
+    let kind = c.value.as_str();
+    Ok(CaseResult::certified(case.id.clone(), kind, &c))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_reach_of_a_line_covers_the_box() {
+        let b = [Interval::from_bounds(-1.0, 1.0); 3];
+        let (lo, hi) = reach(&[-5.0, 0.0, 0.0], &[2.0, 0.0, 0.0], Some(&b)).expect("bounded");
+        assert!(lo <= 2.0 && hi >= 3.0 && hi - lo < 1.1);
+        assert_eq!(reach(&[0.0; 3], &[1.0, 0.0, 0.0], None), None);
+    }
+
+    #[test]
+    fn only_finite_boxes_bound_a_line() {
+        let b = [
+            Interval::from_bounds(f64::NEG_INFINITY, 1.0),
+            Interval::from_bounds(0.0, 1.0),
+            Interval::from_bounds(0.0, 1.0),
+        ];
+        assert_eq!(reach(&[0.0; 3], &[1.0, 0.0, 0.0], Some(&b)), None);
+    }
+}
