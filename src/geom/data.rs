@@ -8,8 +8,7 @@ use rug::Rational;
 
 use super::objects::{Coord, Line, Line2, Plane, Segment, Segment2};
 use crate::num::dd::{Dd, ProductMode};
-use crate::num::expansion::Expansion;
-use crate::num::ratio::Ratio;
+use crate::num::ratio::{Ratio, SignedRing};
 use crate::num::ring::{cross3, dot3, sub2, sub3, Field, Ring, V2, V3};
 
 /// Conversion of an input coordinate into a ring (exact for every pair used).
@@ -32,9 +31,10 @@ impl Lift<Rational> for Rational {
         self.clone()
     }
 }
-impl Lift<Ratio<Expansion>> for f64 {
-    fn lift(&self) -> Ratio<Expansion> {
-        <Ratio<Expansion> as Field>::from_f64(*self)
+impl<E: SignedRing> Lift<Ratio<E>> for f64 {
+    #[inline(always)]
+    fn lift(&self) -> Ratio<E> {
+        <Ratio<E> as Field>::from_f64(*self)
     }
 }
 impl<M: ProductMode> Lift<Dd<M>> for f64 {

@@ -13,7 +13,9 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::{LineData, Linear, PlaneData};
-use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
+};
 use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
@@ -156,7 +158,8 @@ pub fn intersect_line_plane_exact(
 }
 
 /// Certified: the exact verdict for the double inputs, coordinates correctly rounded
-/// with enclosures. Tiers: the double-double filter (generic input), then rationals.
+/// with enclosures. Tiers: the double-double filter (generic input), fixed-width
+/// integers, expansions, rationals.
 pub fn intersect_line_plane(
     line: Linear<f64>,
     plane: &Plane<f64>,
@@ -164,10 +167,13 @@ pub fn intersect_line_plane(
     if let Some(r) = fast_dispatch(line, plane) {
         return filter_certified(r);
     }
-    if let Some(c) = expansion_tier(|r| {
-        let l: LineData<Ratio<Expansion>> = line.data();
-        core(&l, &PlaneData::new(plane)).map(|q| r.round(q))
-    }) {
+    if let Some(c) = ring_tier_answer::<SmallInteger>(line, plane) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<WideInteger>(line, plane) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<Expansion>(line, plane) {
         return c;
     }
     let l: LineData<Rational> = line.data();
@@ -175,6 +181,17 @@ pub fn intersect_line_plane(
     let mut rounder = Rounder::default();
     let r = core(&l, &p).map(|q| rounder.round(q));
     rounder.certify(r)
+}
+
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+fn ring_tier_answer<E: ExactRing>(
+    line: Linear<f64>,
+    plane: &Plane<f64>,
+) -> Option<Certified<LinePlane<Rounded>>> {
+    ring_tier::<E, _>(|r| {
+        let l: LineData<Ratio<E>> = line.data();
+        core(&l, &PlaneData::new(plane)).map(|q| r.round(q))
+    })
 }
 
 /// Filter constants, as `k·u²`, re-derived by `tests::filter_constants`: each is the

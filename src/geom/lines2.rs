@@ -18,7 +18,9 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::data::{Line2Data, Linear2};
-use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
+};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
@@ -225,14 +227,26 @@ pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersec
     if let Some(r) = fast_dispatch(a, b) {
         return filter_certified(r);
     }
-    if let Some(c) =
-        expansion_tier(|r| core::<Ratio<Expansion>>(&a.data(), &b.data()).map(|q| r.round(q)))
-    {
+    if let Some(c) = ring_tier_answer::<SmallInteger>(a, b) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<WideInteger>(a, b) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<Expansion>(a, b) {
         return c;
     }
     let mut r = Rounder::default();
     let value = core::<Rational>(&a.data(), &b.data()).map(|q| r.round(q));
     r.certify(value)
+}
+
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+fn ring_tier_answer<E: ExactRing>(
+    a: Linear2<f64>,
+    b: Linear2<f64>,
+) -> Option<Certified<Intersection2<Rounded>>> {
+    ring_tier::<E, _>(|r| core::<Ratio<E>>(&a.data(), &b.data()).map(|q| r.round(q)))
 }
 
 /// Filter constants (`k·u²`), re-derived by `tests::filter_constants` (rules as in

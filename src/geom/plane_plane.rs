@@ -16,13 +16,16 @@
 //! with `e = −f_b(a₀)`, `g = n·(x_r − a₀)`; on `b` the same with the roles swapped and
 //! determinant `−|n|²`.
 //!
-//! `n = 0` exactly: `Coincident` if `h_a N_b = h_b N_a` (planes `N·x = h`), else `Parallel`.
+//! `n = 0` exactly: `Coincident` if the planes share a point (`f_a(o_b) = 0`, or
+//! `h_a N_b = h_b N_a` for two implicit planes `N·x = h`), else `Parallel`.
 
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::PlaneData;
-use super::exact_tier::{expansion_tier, filter_certified, ExpansionRounder, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, RingRounder, Rounder, SmallInteger, WideInteger,
+};
 use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
@@ -156,6 +159,7 @@ fn param_terms<R: Ring>(
     })
 }
 
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` with its `n`
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
     terms_from(a, b, cross3(a.n(), b.n()))
@@ -191,14 +195,28 @@ pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) 
 pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R> {
     let n = cross3(a.n(), b.n());
     if is_zero3(&n) {
-        let diff = sub3(&scale3(&a.offset(), b.n()), &scale3(&b.offset(), a.n()));
-        return if is_zero3(&diff) {
+        return if coincide_parallel(a, b) {
             PlanePlane::Coincident
         } else {
             PlanePlane::Parallel
         };
     }
     PlanePlane::Line(finish(terms_from(a, b, n)))
+}
+
+/// Whether two planes with parallel normals (`N_a × N_b = 0`) are the same plane: they
+/// are iff they share one point, so when one of them has an origin the test is that
+/// the other vanishes there (`f_a(o_b) = 0`, degree 3), otherwise (two implicit planes
+/// `N·x = h`) that `h_a N_b = h_b N_a`.
+pub(crate) fn coincide_parallel<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> bool {
+    match (a.origin(), b.origin()) {
+        (_, Some(o)) => a.value_at(o).is_zero(),
+        (Some(o), None) => b.value_at(o).is_zero(),
+        (None, None) => is_zero3(&sub3(
+            &scale3(&a.offset(), b.n()),
+            &scale3(&b.offset(), a.n()),
+        )),
+    }
 }
 
 fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
@@ -217,9 +235,9 @@ fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
     }
 }
 
-/// The line of two planes known to intersect (`N_a × N_b ≠ 0`), in the field.
-pub(crate) fn line_of<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlaneLine<R> {
-    finish(terms(a, b))
+/// The line of two planes known to intersect, in the field, given `n = N_a × N_b ≠ 0`.
+pub(crate) fn line_with<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> PlaneLine<R> {
+    finish(terms_from(a, b, n))
 }
 
 /// Plain f64 (uncertified; `n == 0.0` decides parallelism).
@@ -258,13 +276,27 @@ pub(crate) fn round_line(l: PlaneLine<Rational>, r: &mut Rounder) -> PlaneLine<R
     }
 }
 
-/// Round an exact plane line from the expansion tier (unscaled directions only).
-pub(crate) fn round_line_expansion(
-    l: PlaneLine<Ratio<Expansion>>,
-    r: &mut ExpansionRounder,
+/// Round an exact plane line from an exact-ring tier (unscaled directions only).
+pub(crate) fn round_line_ring<E: ExactRing>(
+    l: PlaneLine<Ratio<E>>,
+    r: &mut RingRounder<E>,
 ) -> PlaneLine<Rounded> {
     r.check_unscaled(l.dir.as_slice());
     l.map(|x| r.round(x))
+}
+
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+fn ring_tier_answer<E: ExactRing>(
+    a: &Plane<f64>,
+    b: &Plane<f64>,
+) -> Option<Certified<PlanePlane<Rounded>>> {
+    ring_tier::<E, _>(
+        |r| match core::<Ratio<E>>(&PlaneData::new(a), &PlaneData::new(b)) {
+            PlanePlane::Line(l) => PlanePlane::Line(round_line_ring(l, r)),
+            PlanePlane::Parallel => PlanePlane::Parallel,
+            PlanePlane::Coincident => PlanePlane::Coincident,
+        },
+    )
 }
 
 /// Certified: exact verdict, correctly rounded point, direction and parameter lines.
@@ -272,15 +304,13 @@ pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<
     if let Some(l) = fast_dispatch(a, b) {
         return filter_certified(PlanePlane::Line(l));
     }
-    if let Some(c) =
-        expansion_tier(
-            |r| match core::<Ratio<Expansion>>(&PlaneData::new(a), &PlaneData::new(b)) {
-                PlanePlane::Line(l) => PlanePlane::Line(round_line_expansion(l, r)),
-                PlanePlane::Parallel => PlanePlane::Parallel,
-                PlanePlane::Coincident => PlanePlane::Coincident,
-            },
-        )
-    {
+    if let Some(c) = ring_tier_answer::<SmallInteger>(a, b) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<WideInteger>(a, b) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<Expansion>(a, b) {
         return c;
     }
     let mut r = Rounder::default();

@@ -12,7 +12,8 @@
 //! point, of lower degree (§16.7's `(t, τ) = (−1, 2)` needs no orthogonal basis).
 //!
 //! `D = 0` exactly: if every `N_i × N_j = 0`, all normals are parallel: `Plane` when all
-//! three coincide (`h_i N_j = h_j N_i`), else `Empty`. Otherwise the first pair `(i, j)`
+//! three coincide (plane 0 shares a point with each other, see
+//! `plane_plane::coincide_parallel`), else `Empty`. Otherwise the first pair `(i, j)`
 //! (in the order (0,1), (0,2), (1,2)) with `N_i × N_j ≠ 0` gives the line of §8; it is
 //! the answer if it lies in the third plane (`f_k(p) = 0`; its direction is orthogonal to
 //! `N_k` because `D = 0`), else `Empty`. This covers two coincident planes crossed by a
@@ -23,15 +24,19 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::PlaneData;
-use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
+};
 use super::objects::Plane;
-use super::plane_plane::{line_of, plane_scales, round_line, round_line_expansion, PlaneLine};
+use super::plane_plane::{
+    coincide_parallel, line_with, plane_scales, round_line, round_line_ring, PlaneLine,
+};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{bound, dispatch_fma, round_over, Denominator, SCALE_MIN};
 use crate::num::ratio::Ratio;
-use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, is_zero3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
 /// The result of three planes.
@@ -147,10 +152,20 @@ pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
                 .map(|q| q.map(|[u, v]| Vector2::new(u.divide(d), v.divide(d)))),
         };
     }
-    // N_i × N_j for the pairs (0,1), (0,2), (1,2) are ±c[2], ±c[1], c[0].
-    for (i, j, k, cij) in [(0, 1, 2, &c[2]), (0, 2, 1, &c[1]), (1, 2, 0, &c[0])] {
+    // N_i × N_j for the pairs (0,1), (0,2), (1,2) are c[2], −c[1], c[0]: the line's
+    // direction is taken from them rather than recomputed.
+    for (i, j, k, cij, flip) in [
+        (0, 1, 2, &c[2], false),
+        (0, 2, 1, &c[1], true),
+        (1, 2, 0, &c[0], false),
+    ] {
         if !is_zero3(cij) {
-            let line = line_of(&p[i], &p[j]);
+            let n = if flip {
+                [cij[0].negate(), cij[1].negate(), cij[2].negate()]
+            } else {
+                cij.clone()
+            };
+            let line = line_with(&p[i], &p[j], n);
             let point = [
                 line.point[0].clone(),
                 line.point[1].clone(),
@@ -163,13 +178,7 @@ pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
             };
         }
     }
-    let same = |a: &PlaneData<R>, b: &PlaneData<R>| {
-        is_zero3(&sub3(
-            &scale3(&a.offset(), b.n()),
-            &scale3(&b.offset(), a.n()),
-        ))
-    };
-    if same(&p[0], &p[1]) && same(&p[0], &p[2]) {
+    if coincide_parallel(&p[0], &p[1]) && coincide_parallel(&p[0], &p[2]) {
         ThreePlanes::Plane
     } else {
         ThreePlanes::Empty
@@ -199,20 +208,13 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
     if let Some(r) = fast_dispatch(p) {
         return filter_certified(r);
     }
-    if let Some(c) = expansion_tier(|r| {
-        let data: [PlaneData<Ratio<Expansion>>; 3] = [
-            PlaneData::new(&p[0]),
-            PlaneData::new(&p[1]),
-            PlaneData::new(&p[2]),
-        ];
-        match core(&data) {
-            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
-                line: round_line_expansion(line, r),
-                pair,
-            },
-            other => other.map(|q| r.round(q)),
-        }
-    }) {
+    if let Some(c) = ring_tier_answer::<SmallInteger>(p) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<WideInteger>(p) {
+        return c;
+    }
+    if let Some(c) = ring_tier_answer::<Expansion>(p) {
         return c;
     }
     let data: [PlaneData<Rational>; 3] = [
@@ -229,6 +231,24 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
         other => other.map(|q| r.round(q)),
     };
     r.certify(res)
+}
+
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+fn ring_tier_answer<E: ExactRing>(p: &[Plane<f64>; 3]) -> Option<Certified<ThreePlanes<Rounded>>> {
+    ring_tier::<E, _>(|r| {
+        let data: [PlaneData<Ratio<E>>; 3] = [
+            PlaneData::new(&p[0]),
+            PlaneData::new(&p[1]),
+            PlaneData::new(&p[2]),
+        ];
+        match core(&data) {
+            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
+                line: round_line_ring(line, r),
+                pair,
+            },
+            other => other.map(|q| r.round(q)),
+        }
+    })
 }
 
 /// Filter constants (`k·u²`), re-derived by `tests::filter_constants` with
