@@ -232,7 +232,7 @@ fn line_plane_case_lp1() {
 }
 
 /// Which tier decides: generic input in the filter, exactly degenerate small-integer
-/// input in fixed-width integers, an exponent spread too wide for their 512 bits in
+/// input in fixed-width integers, an exponent spread too wide for their 768 bits in
 /// expansions, and magnitudes beyond the expansions' range in rationals — with the same
 /// (exact) answer.
 #[test]
@@ -258,10 +258,10 @@ fn tiers_escalate_and_agree() {
     assert_eq!(line.point, Vector3::new(exact(0.0), exact(0.0), exact(5.0)));
     // n = N₀ × N₁ with N₀ = (0,0,1)×(1,0,0) = (0,1,0), N₁ = (0,0,1)×(0,1,0) = (−1,0,0)
     assert_eq!(line.dir, Vector3::new(exact(0.0), exact(0.0), exact(1.0)));
-    // The same line with origins at 1e100 and 1e-100: the line test aligns numbers
-    // ~665 bits apart, beyond the integers' width; expansions decide.
-    let w2 = plane([0.0, 0.0, 1e100], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
-    let w3 = plane([0.0, 0.0, 1e-100], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]);
+    // The same line with origins at 1e150 and 1e-150: the line test aligns numbers
+    // ~1000 bits apart, beyond the integers' 768 bits; expansions decide.
+    let w2 = plane([0.0, 0.0, 1e150], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
+    let w3 = plane([0.0, 0.0, 1e-150], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]);
     let c = intersect_three_planes(&[p1.clone(), w2, w3]);
     assert_eq!(c.arithmetic, Arithmetic::Expansion);
     let ThreePlanes::Line { line, pair } = c.value else {
@@ -270,7 +270,7 @@ fn tiers_escalate_and_agree() {
     assert_eq!(pair, (0, 1));
     assert_eq!(
         line.point,
-        Vector3::new(exact(0.0), exact(0.0), exact(1e100))
+        Vector3::new(exact(0.0), exact(0.0), exact(1e150))
     );
     // The same configuration with tiny vectors (products below 2^-969 are not
     // error-free in doubles): rationals.

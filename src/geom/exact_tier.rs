@@ -86,11 +86,11 @@ impl ExactRing for Expansion {
 /// input: small integers, grid coordinates), even in the degree-11 line test.
 pub(crate) type SmallInteger = Dyadic128;
 
-/// The second attempt: 8 limbs (512-bit integers). Degree-11 formulas (the three-plane
-/// line test) of 53-bit data fit when the exponent spread is below ~40 bits, the
-/// degree-7 point formulas below ~20 bits more; others overflow and escalate to
-/// expansions.
-pub(crate) type WideInteger = Dyadic<8>;
+/// The second attempt: 12 limbs (768-bit integers). The degree-11 formulas (the
+/// three-plane line test) of full 53-bit data fit while the exponent spread of the data
+/// stays below ~15 bits, the degree-7 point formulas below ~55 bits; others overflow
+/// and escalate to expansions.
+pub(crate) type WideInteger = Dyadic<12>;
 
 impl ExactRing for Dyadic128 {
     const ARITHMETIC: Arithmetic = Arithmetic::Integer;
