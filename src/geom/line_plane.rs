@@ -164,18 +164,27 @@ pub fn intersect_line_plane(
     line: Linear<f64>,
     plane: &Plane<f64>,
 ) -> Certified<LinePlane<Rounded>> {
-    if let Some(r) = fast_dispatch(line, plane) {
-        return filter_certified(r);
+    match fast_dispatch(line, plane) {
+        Some(r) => filter_certified(r),
+        None => exact_tiers(line, plane),
     }
-    if let Some(c) = ring_tier_answer::<SmallInteger>(line, plane) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<WideInteger>(line, plane) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<Expansion>(line, plane) {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<Rounded>> {
+    ring_tier_answer::<SmallInteger>(line, plane)
+        .or_else(|| ring_tier_answer::<WideInteger>(line, plane))
+        .or_else(|| ring_tier_answer::<Expansion>(line, plane))
+        .unwrap_or_else(|| rational_tier(line, plane))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<Rounded>> {
     let l: LineData<Rational> = line.data();
     let p: PlaneData<Rational> = PlaneData::new(plane);
     let mut rounder = Rounder::default();
@@ -184,6 +193,7 @@ pub fn intersect_line_plane(
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(never)]
 fn ring_tier_answer<E: ExactRing>(
     line: Linear<f64>,
     plane: &Plane<f64>,

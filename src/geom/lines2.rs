@@ -224,24 +224,34 @@ pub fn intersect_linear2_exact(
 
 /// Certified: exact verdict, correctly rounded point and parameters.
 pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
-    if let Some(r) = fast_dispatch(a, b) {
-        return filter_certified(r);
+    match fast_dispatch(a, b) {
+        Some(r) => filter_certified(r),
+        None => exact_tiers(a, b),
     }
-    if let Some(c) = ring_tier_answer::<SmallInteger>(a, b) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<WideInteger>(a, b) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<Expansion>(a, b) {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
+    ring_tier_answer::<SmallInteger>(a, b)
+        .or_else(|| ring_tier_answer::<WideInteger>(a, b))
+        .or_else(|| ring_tier_answer::<Expansion>(a, b))
+        .unwrap_or_else(|| rational_tier(a, b))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
     let mut r = Rounder::default();
     let value = core::<Rational>(&a.data(), &b.data()).map(|q| r.round(q));
     r.certify(value)
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(never)]
 fn ring_tier_answer<E: ExactRing>(
     a: Linear2<f64>,
     b: Linear2<f64>,

@@ -135,17 +135,29 @@ fn param_terms<R: Ring>(
     n: &V3<R>,
     x_r: &V3<R>,
     on_a: bool,
+    other_at_origin: Option<&R>,
 ) -> Option<ParamTerms<R>> {
     let PlaneData::Param { o, u, v, .. } = q else {
         return None;
     };
     let no = other.n();
-    let e = other.value_at(o).negate();
-    let g = dot3(n, &sub3(x_r, o));
     let (nu, nv) = (dot3(no, u), dot3(no, v));
     let (n_u, n_v) = (dot3(n, u), dot3(n, v));
-    let un = e.times(&n_v).minus(&nv.times(&g));
-    let vn = nu.times(&g).minus(&e.times(&n_u));
+    let (un, vn) = match other_at_origin {
+        // x_r = o: g = 0 and e = −f_other(x_r), already known.
+        Some(f) => {
+            let e = f.negate();
+            (e.times(&n_v), e.times(&n_u).negate())
+        }
+        None => {
+            let e = other.value_at(o).negate();
+            let g = dot3(n, &sub3(x_r, o));
+            (
+                e.times(&n_v).minus(&nv.times(&g)),
+                nu.times(&g).minus(&e.times(&n_u)),
+            )
+        }
+    };
     Some(if on_a {
         ParamTerms {
             num: [un, vn],
@@ -170,18 +182,26 @@ pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
 pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> Terms<R> {
     let nn = dot3(&n, &n);
     let x_r = reference(a, b);
-    let fa = a.value_at(&x_r);
-    let fb = b.value_at(&x_r);
-    let ta = cross3(b.n(), &n);
-    let tb = cross3(&n, a.n());
+    // The plane whose origin is x_r vanishes there: its term of the point is left out,
+    // and its parameters reuse the other plane's value at x_r.
+    let at_b = b.origin().is_some();
+    let at_a = !at_b && a.origin().is_some();
+    let fa = if at_a { R::zero() } else { a.value_at(&x_r) };
+    let fb = if at_b { R::zero() } else { b.value_at(&x_r) };
+    let ta = (!at_a).then(|| cross3(b.n(), &n));
+    let tb = (!at_b).then(|| cross3(&n, a.n()));
     let pnum = each!(i in [0, 1, 2] => {
-        x_r[i]
-            .times(&nn)
-            .minus(&fa.times(&ta[i]))
-            .minus(&fb.times(&tb[i]))
+        let mut acc = x_r[i].times(&nn);
+        if let Some(ta) = &ta {
+            acc = acc.minus(&fa.times(&ta[i]));
+        }
+        if let Some(tb) = &tb {
+            acc = acc.minus(&fb.times(&tb[i]));
+        }
+        acc
     });
-    let on_a = param_terms(a, b, &n, &x_r, true);
-    let on_b = param_terms(b, a, &n, &x_r, false);
+    let on_a = param_terms(a, b, &n, &x_r, true, at_a.then_some(&fb));
+    let on_b = param_terms(b, a, &n, &x_r, false, at_b.then_some(&fa));
     Terms {
         n,
         nn,
@@ -286,6 +306,7 @@ pub(crate) fn round_line_ring<E: ExactRing>(
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(never)]
 fn ring_tier_answer<E: ExactRing>(
     a: &Plane<f64>,
     b: &Plane<f64>,
@@ -301,18 +322,27 @@ fn ring_tier_answer<E: ExactRing>(
 
 /// Certified: exact verdict, correctly rounded point, direction and parameter lines.
 pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
-    if let Some(l) = fast_dispatch(a, b) {
-        return filter_certified(PlanePlane::Line(l));
+    match fast_dispatch(a, b) {
+        Some(l) => filter_certified(PlanePlane::Line(l)),
+        None => exact_tiers(a, b),
     }
-    if let Some(c) = ring_tier_answer::<SmallInteger>(a, b) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<WideInteger>(a, b) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<Expansion>(a, b) {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
+    ring_tier_answer::<SmallInteger>(a, b)
+        .or_else(|| ring_tier_answer::<WideInteger>(a, b))
+        .or_else(|| ring_tier_answer::<Expansion>(a, b))
+        .unwrap_or_else(|| rational_tier(a, b))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
     let mut r = Rounder::default();
     let res = match core::<Rational>(&PlaneData::new(a), &PlaneData::new(b)) {
         PlanePlane::Line(l) => PlanePlane::Line(round_line(l, &mut r)),

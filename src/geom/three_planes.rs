@@ -104,35 +104,50 @@ pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
 #[inline(always)]
 pub(crate) fn terms_from<R: Ring>(p: &[PlaneData<R>; 3], c: &[V3<R>; 3], det: R) -> Terms<R> {
     let n = [p[0].n(), p[1].n(), p[2].n()];
-    let x_r = p
-        .iter()
-        .find_map(|q| q.origin())
+    // x_r is the origin of plane k0 (the first parametric one), where f_k0 vanishes:
+    // its term is left out, and its parameters reuse the other two values f_i(x_r).
+    let k0 = p.iter().position(|q| q.origin().is_some());
+    let x_r = k0
+        .and_then(|k| p[k].origin())
         .cloned()
         .unwrap_or_else(|| [R::zero(), R::zero(), R::zero()]);
-    let f = [
-        p[0].value_at(&x_r),
-        p[1].value_at(&x_r),
-        p[2].value_at(&x_r),
-    ];
-    let pnum = each!(m in [0, 1, 2] => {
-        x_r[m]
-            .times(&det)
-            .minus(&f[0].times(&c[0][m]))
-            .minus(&f[1].times(&c[1][m]))
-            .minus(&f[2].times(&c[2][m]))
+    let f = each!(i in [0, 1, 2] => {
+        if k0 == Some(i) {
+            R::zero()
+        } else {
+            p[i].value_at(&x_r)
+        }
     });
-    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k));
+    let pnum = each!(m in [0, 1, 2] => {
+        let mut acc = x_r[m].times(&det);
+        for i in 0..3 {
+            if k0 != Some(i) {
+                acc = acc.minus(&f[i].times(&c[i][m]));
+            }
+        }
+        acc
+    });
+    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k, (k0 == Some(k)).then_some(&f)));
     Terms { det, pnum, params }
 }
 
-/// Numerators (over `D`) of the parameters of the point on parametric plane `k`.
+/// Numerators (over `D`) of the parameters of the point on parametric plane `k`;
+/// `f_at_origin`: the planes' values at `o_k` when already computed.
 #[inline(always)]
-fn plane_params<R: Ring>(p: &[PlaneData<R>; 3], n: &[&V3<R>; 3], k: usize) -> Option<V2<R>> {
+fn plane_params<R: Ring>(
+    p: &[PlaneData<R>; 3],
+    n: &[&V3<R>; 3],
+    k: usize,
+    f_at_origin: Option<&[R; 3]>,
+) -> Option<V2<R>> {
     let PlaneData::Param { o, u, v, .. } = &p[k] else {
         return None;
     };
     let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-    let (fi, fj) = (p[i].value_at(o), p[j].value_at(o));
+    let (fi, fj) = match f_at_origin {
+        Some(f) => (f[i].clone(), f[j].clone()),
+        None => (p[i].value_at(o), p[j].value_at(o)),
+    };
     let un = fj.times(&dot3(n[i], v)).minus(&fi.times(&dot3(n[j], v)));
     let vn = fi.times(&dot3(n[j], u)).minus(&fj.times(&dot3(n[i], u)));
     Some([un, vn])
@@ -205,18 +220,27 @@ pub fn intersect_three_planes_exact(p: &[Plane<Rational>; 3]) -> ThreePlanes<Rat
 
 /// Certified: exact verdict, correctly rounded coordinates and parameters.
 pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
-    if let Some(r) = fast_dispatch(p) {
-        return filter_certified(r);
+    match fast_dispatch(p) {
+        Some(r) => filter_certified(r),
+        None => exact_tiers(p),
     }
-    if let Some(c) = ring_tier_answer::<SmallInteger>(p) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<WideInteger>(p) {
-        return c;
-    }
-    if let Some(c) = ring_tier_answer::<Expansion>(p) {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
+    ring_tier_answer::<SmallInteger>(p)
+        .or_else(|| ring_tier_answer::<WideInteger>(p))
+        .or_else(|| ring_tier_answer::<Expansion>(p))
+        .unwrap_or_else(|| rational_tier(p))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
     let data: [PlaneData<Rational>; 3] = [
         PlaneData::new(&p[0]),
         PlaneData::new(&p[1]),
@@ -234,6 +258,7 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(never)]
 fn ring_tier_answer<E: ExactRing>(p: &[Plane<f64>; 3]) -> Option<Certified<ThreePlanes<Rounded>>> {
     ring_tier::<E, _>(|r| {
         let data: [PlaneData<Ratio<E>>; 3] = [
