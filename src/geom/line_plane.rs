@@ -164,7 +164,17 @@ pub fn intersect_line_plane(
     line: Linear<f64>,
     plane: &Plane<f64>,
 ) -> Certified<LinePlane<Rounded>> {
-    match fast_dispatch(line, plane) {
+    dispatch_fma!(certified(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(
+    line: Linear<f64>,
+    plane: &Plane<f64>,
+) -> Certified<LinePlane<Rounded>> {
+    match fast::<M>(line, plane) {
         Some(r) => filter_certified(r),
         None => exact_tiers(line, plane),
     }
@@ -193,7 +203,7 @@ fn rational_tier(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<R
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
-#[inline(never)]
+#[inline(always)]
 fn ring_tier_answer<E: ExactRing>(
     line: Linear<f64>,
     plane: &Plane<f64>,
@@ -219,10 +229,6 @@ fn ring_tier_answer<E: ExactRing>(
 const EPS_DEN: f64 = 452.0 * U * U;
 const EPS_PNUM: f64 = 2580.0 * U * U;
 const EPS_UVNUM: f64 = 1240.0 * U * U;
-
-fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
-    dispatch_fma!(fast(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>>)
-}
 
 /// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's
 /// origin, an implicit plane's `|d|/m_n`), the line direction `L` (`P` for a segment,

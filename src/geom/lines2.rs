@@ -224,7 +224,17 @@ pub fn intersect_linear2_exact(
 
 /// Certified: exact verdict, correctly rounded point and parameters.
 pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
-    match fast_dispatch(a, b) {
+    dispatch_fma!(certified(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(
+    a: Linear2<f64>,
+    b: Linear2<f64>,
+) -> Certified<Intersection2<Rounded>> {
+    match fast::<M>(a, b) {
         Some(r) => filter_certified(r),
         None => exact_tiers(a, b),
     }
@@ -251,7 +261,7 @@ fn rational_tier(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Ro
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
-#[inline(never)]
+#[inline(always)]
 fn ring_tier_answer<E: ExactRing>(
     a: Linear2<f64>,
     b: Linear2<f64>,
@@ -265,10 +275,6 @@ fn ring_tier_answer<E: ExactRing>(
 const EPS_DELTA: f64 = 155.0 * U * U;
 const EPS_T: f64 = 155.0 * U * U;
 const EPS_P: f64 = 1109.0 * U * U;
-
-fn fast_dispatch(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>> {
-    dispatch_fma!(fast(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>>)
-}
 
 /// Scales `(positions, direction)` of a 2D linear object.
 fn scales(l: &Linear2<f64>) -> Option<(f64, f64)> {

@@ -239,7 +239,8 @@ pub(crate) fn coincide_parallel<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) ->
     }
 }
 
-fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
+/// The line from its polynomials (the divisions by `|n|²`).
+pub(crate) fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
     let nn = tm.nn;
     let div = |q: &R| q.divide(&nn);
     let pl = |p: ParamTerms<R>| ParamLine {
@@ -253,11 +254,6 @@ fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
         on_a: tm.on_a.map(pl),
         on_b: tm.on_b.map(pl),
     }
-}
-
-/// The line of two planes known to intersect, in the field, given `n = N_a × N_b ≠ 0`.
-pub(crate) fn line_with<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> PlaneLine<R> {
-    finish(terms_from(a, b, n))
 }
 
 /// Plain f64 (uncertified; `n == 0.0` decides parallelism).
@@ -306,7 +302,7 @@ pub(crate) fn round_line_ring<E: ExactRing>(
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
-#[inline(never)]
+#[inline(always)]
 fn ring_tier_answer<E: ExactRing>(
     a: &Plane<f64>,
     b: &Plane<f64>,
@@ -322,7 +318,14 @@ fn ring_tier_answer<E: ExactRing>(
 
 /// Certified: exact verdict, correctly rounded point, direction and parameter lines.
 pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
-    match fast_dispatch(a, b) {
+    dispatch_fma!(certified(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
+    match fast::<M>(a, b) {
         Some(l) => filter_certified(PlanePlane::Line(l)),
         None => exact_tiers(a, b),
     }
@@ -376,10 +379,6 @@ pub(crate) fn plane_scales(p: &Plane<f64>, mp: f64) -> Option<(f64, f64, f64)> {
             Some((m, m, extend_scale(Some(mp), *d, m)?))
         }
     }
-}
-
-fn fast_dispatch(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-    dispatch_fma!(fast(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>>)
 }
 
 /// The filter tier: groups `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees

@@ -29,7 +29,8 @@ use super::exact_tier::{
 };
 use super::objects::Plane;
 use super::plane_plane::{
-    coincide_parallel, line_with, plane_scales, round_line, round_line_ring, PlaneLine,
+    coincide_parallel, finish, plane_scales, round_line, round_line_ring,
+    terms_from as terms_from_pair, PlaneLine,
 };
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
@@ -180,14 +181,14 @@ pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
             } else {
                 cij.clone()
             };
-            let line = line_with(&p[i], &p[j], n);
-            let point = [
-                line.point[0].clone(),
-                line.point[1].clone(),
-                line.point[2].clone(),
-            ];
-            return if p[k].value_at(&point).is_zero() {
-                ThreePlanes::Line { line, pair: (i, j) }
+            // The line lies in plane k iff its point p = pnum/|n|² does: tested on the
+            // numerators (|n|²·f_k(p), a polynomial), before any division.
+            let tm = terms_from_pair(&p[i], &p[j], n);
+            return if p[k].value_at_homogeneous(&tm.pnum, &tm.nn).is_zero() {
+                ThreePlanes::Line {
+                    line: finish(tm),
+                    pair: (i, j),
+                }
             } else {
                 ThreePlanes::Empty
             };
@@ -220,7 +221,14 @@ pub fn intersect_three_planes_exact(p: &[Plane<Rational>; 3]) -> ThreePlanes<Rat
 
 /// Certified: exact verdict, correctly rounded coordinates and parameters.
 pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
-    match fast_dispatch(p) {
+    dispatch_fma!(certified(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
+    match fast::<M>(p) {
         Some(r) => filter_certified(r),
         None => exact_tiers(p),
     }
@@ -258,7 +266,7 @@ fn rational_tier(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
 }
 
 /// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
-#[inline(never)]
+#[inline(always)]
 fn ring_tier_answer<E: ExactRing>(p: &[Plane<f64>; 3]) -> Option<Certified<ThreePlanes<Rounded>>> {
     ring_tier::<E, _>(|r| {
         let data: [PlaneData<Ratio<E>>; 3] = [
@@ -282,10 +290,6 @@ fn ring_tier_answer<E: ExactRing>(p: &[Plane<f64>; 3]) -> Option<Certified<Three
 const EPS_DET: f64 = 5598.0 * U * U;
 const EPS_PNUM: f64 = 66138.0 * U * U;
 const EPS_PARAM: f64 = 20027.0 * U * U;
-
-fn fast_dispatch(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
-    dispatch_fma!(fast(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>>)
-}
 
 /// The filter tier (point case only). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`,
 /// `G_2`; with `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`:

@@ -29,9 +29,9 @@ use super::round::{next_down, next_up, Rounded};
 
 /// The widest instance the rounding's scratch buffers are sized for.
 pub const MAX_LIMBS: usize = 16;
-/// Scratch for the rounding residual `P − c·Q` (`N + 1` limbs for `c·Q`, aligned against
-/// `P`: at most `2N + 2` limbs, see [`round_quotient`]).
-const SCRATCH: usize = 2 * MAX_LIMBS + 4;
+/// Scratch for the rounding residual `P − c·Q` of the widest instance (`N + 1` limbs for
+/// `c·Q`, aligned against `P`: at most `2N + 2` limbs, see [`round_quotient`]).
+pub(crate) const SCRATCH: usize = 2 * MAX_LIMBS + 4;
 
 /// An exact dyadic number `(−1)^neg · mag · 2^exp` of at most `N` limbs (canonical:
 /// `mag` odd and normalised, zero with `len = 0`, `exp = 0`, `neg = false`).
@@ -355,17 +355,18 @@ const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
 /// is outside `[2⁻⁹⁶⁰, 2¹⁰⁰⁰]`, or (never for a candidate within a few ulps) after six
 /// candidates.
 pub fn round_quotient<const N: usize>(p: &Dyadic<N>, q: &Dyadic<N>) -> Option<Rounded> {
-    round_quotient_parts(p.parts(), q.parts())
+    round_quotient_parts::<SCRATCH>(p.parts(), q.parts())
 }
 
 /// A dyadic number given by its parts: `(negative, exponent, normalised magnitude)`.
 pub(crate) type Parts<'a> = (bool, i64, &'a [u64]);
 
-/// [`round_quotient`] on the parts of two dyadic numbers (magnitudes of at most
-/// [`MAX_LIMBS`] limbs).
-pub(crate) fn round_quotient_parts(p: Parts<'_>, q: Parts<'_>) -> Option<Rounded> {
+/// [`round_quotient`] on the parts of two dyadic numbers, with scratch buffers of `S`
+/// limbs: `S ≥ 2·max(len p, len q) + 4` always suffices (see [`round_quotient`]); a
+/// smaller `S` only makes more quotients fall through (`None`), never a wrong one.
+pub(crate) fn round_quotient_parts<const S: usize>(p: Parts<'_>, q: Parts<'_>) -> Option<Rounded> {
     let ((pneg, ep, pm), (qneg, eq, qm)) = (p, q);
-    if qm.is_empty() || qm.len() > MAX_LIMBS || pm.len() > MAX_LIMBS {
+    if qm.is_empty() {
         return None;
     }
     if pm.is_empty() {
@@ -380,8 +381,8 @@ pub(crate) fn round_quotient_parts(p: Parts<'_>, q: Parts<'_>) -> Option<Rounded
         return None;
     }
     let mut c = (fp / fq) * pow2(k as i32);
-    let mut prod = [0u64; SCRATCH];
-    let mut res = [0u64; SCRATCH];
+    let mut prod = [0u64; S];
+    let mut res = [0u64; S];
     for _ in 0..6 {
         if !(C_MIN..=C_MAX).contains(&c) {
             return None;

@@ -182,7 +182,8 @@ impl Dyadic128 {
         }
         let (pl, pn) = p.limbs();
         let (ql, qn) = q.limbs();
-        round_quotient_parts(
+        // Two-limb operands: 8 limbs of scratch suffice (2·2 + 4).
+        round_quotient_parts::<8>(
             (p.neg, i64::from(p.exp), &pl[..pn]),
             (q.neg, i64::from(q.exp), &ql[..qn]),
         )

@@ -60,10 +60,11 @@ impl<E: SignedRing> Ratio<E> {
     fn whole(num: E) -> Self {
         Ratio { num, den: None }
     }
-    /// `self ± r` with `op` the numerators' `plus` or `minus`: over a shared
-    /// denominator (both whole, or structurally equal denominators) without products.
-    #[inline]
-    fn add(&self, r: &Self, op: fn(&E, &E) -> E) -> Self {
+    /// `self ± r` (`sub`: minus): over a shared denominator (both whole, or structurally
+    /// equal denominators) without products.
+    #[inline(always)]
+    fn add(&self, r: &Self, sub: bool) -> Self {
+        let op = |a: &E, b: &E| if sub { a.minus(b) } else { a.plus(b) };
         match (&self.den, &r.den) {
             (None, None) => Self::whole(op(&self.num, &r.num)),
             (Some(a), Some(b)) if a == b => Ratio {
@@ -110,11 +111,11 @@ impl<E: SignedRing> Ring for Ratio<E> {
     }
     #[inline]
     fn plus(&self, r: &Self) -> Self {
-        self.add(r, E::plus)
+        self.add(r, false)
     }
     #[inline]
     fn minus(&self, r: &Self) -> Self {
-        self.add(r, E::minus)
+        self.add(r, true)
     }
     #[inline]
     fn times(&self, r: &Self) -> Self {
