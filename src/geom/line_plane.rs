@@ -22,7 +22,7 @@ use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{bound, dispatch_fma, extend_scale, group_scale, round_over, Denominator};
 use crate::num::ratio::Ratio;
-use crate::num::ring::{det3, dot3, each, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
 /// Where a line meets a plane: the point, the line parameter `t` and, for a parametric
@@ -96,7 +96,9 @@ pub(crate) fn terms_from<R: Ring>(l: &LineData<R>, p: &PlaneData<R>, den: R, f0:
     let uvnum = match p {
         PlaneData::Param { o, u, v, .. } => {
             let w = sub3(&l.o, o);
-            Some([det3(&w, v, &l.d), det3(u, &w, &l.d)])
+            // det(w, s₂, c') = w·(s₂ × c'), det(s₁, w, c') = w·(c' × s₁): the cross
+            // products of inputs are exact products, one rounding each.
+            Some([dot3(&w, &cross3(v, &l.d)), dot3(&w, &cross3(&l.d, u))])
         }
         PlaneData::Implicit { .. } => None,
     };
@@ -228,7 +230,7 @@ fn ring_tier_answer<E: ExactRing>(
 /// `451 − 3·89 = 184u²`. The test evaluates exactly these rules.
 const EPS_DEN: f64 = 452.0 * U * U;
 const EPS_PNUM: f64 = 2580.0 * U * U;
-const EPS_UVNUM: f64 = 1240.0 * U * U;
+const EPS_UVNUM: f64 = 1198.0 * U * U;
 
 /// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's
 /// origin, an implicit plane's `|d|/m_n`), the line direction `L` (`P` for a segment,
