@@ -1,6 +1,6 @@
-//! Linear kernel: plain f64 vs certified (filter → rationals) vs the pure exact-rational
-//! path, on generic and on exactly degenerate input (a fixed seeded batch of 64 cases
-//! per iteration). Ratios are in BENCHMARKS.md.
+//! Linear kernel: plain f64 vs certified (filter → integers → expansions → rationals)
+//! vs the pure exact-rational path, on generic and on exactly degenerate input (a fixed
+//! seeded batch of 64 cases per iteration). Ratios are in BENCHMARKS.md.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use geocert::geom::line_plane::{
@@ -150,7 +150,7 @@ fn lines(degenerate: bool) -> Vec<(Line<f64>, Plane<f64>)> {
 /// The tier expected to decide each batch (checked before timing).
 fn tier(degenerate: bool) -> geocert::Arithmetic {
     if degenerate {
-        geocert::Arithmetic::Expansion
+        geocert::Arithmetic::Integer
     } else {
         geocert::Arithmetic::Filter
     }

@@ -42,6 +42,9 @@ pub enum Arithmetic {
     Float,
     /// A semi-static filter: f64 evaluation with a proven error bound.
     Filter,
+    /// Exact fixed-width integer arithmetic on dyadic numbers (`m·2^e`, `m` of a few
+    /// 64-bit limbs), without allocation; `bits` is the largest integer's bit length.
+    Integer,
     /// Exact arithmetic on floating-point expansions (sums of non-overlapping doubles).
     Expansion,
     /// Exact arithmetic on `rug::Integer` / `rug::Rational`.
@@ -58,6 +61,7 @@ impl Arithmetic {
         match self {
             Arithmetic::Float => "float",
             Arithmetic::Filter => "filter",
+            Arithmetic::Integer => "integer",
             Arithmetic::Expansion => "expansion",
             Arithmetic::Rational => "rational",
             Arithmetic::Interval => "interval",

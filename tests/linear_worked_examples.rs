@@ -208,9 +208,9 @@ fn line_plane_case_lp1() {
     let pl = plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
     let c = intersect_line_plane(Linear::Line(&line), &pl);
     assert_eq!(c.status, Status::Exact);
-    // Results that are doubles cannot be certified as such by the filter: the expansion
+    // Results that are doubles cannot be certified as such by the filter: the integer
     // tier decides them exactly.
-    assert_eq!(c.arithmetic, Arithmetic::Expansion);
+    assert_eq!(c.arithmetic, Arithmetic::Integer);
     let LinePlane::Point(p) = c.value else {
         panic!()
     };
@@ -232,8 +232,9 @@ fn line_plane_case_lp1() {
 }
 
 /// Which tier decides: generic input in the filter, exactly degenerate small-integer
-/// input in expansions, and magnitudes beyond the expansions' range in rationals — with
-/// the same (exact) answer.
+/// input in fixed-width integers, an exponent spread too wide for their 768 bits in
+/// expansions, and magnitudes beyond the expansions' range in rationals — with the same
+/// (exact) answer.
 #[test]
 fn tiers_escalate_and_agree() {
     let a = plane([0.1, 0.2, 0.3], [1.0, 0.3, -0.2], [0.25, 1.0, 0.5]);
@@ -243,12 +244,12 @@ fn tiers_escalate_and_agree() {
         intersect_three_planes(&[a, b, c]).arithmetic,
         Arithmetic::Filter
     );
-    // Three planes through the z axis: a line, decided exactly in expansions.
+    // Three planes through the z axis: a line, decided exactly in integers.
     let p1 = plane([0.0; 3], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]);
     let p2 = plane([0.0, 0.0, 5.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
     let p3 = plane([0.0, 0.0, -3.0], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]);
     let c = intersect_three_planes(&[p1.clone(), p2.clone(), p3]);
-    assert_eq!(c.arithmetic, Arithmetic::Expansion);
+    assert_eq!(c.arithmetic, Arithmetic::Integer);
     let ThreePlanes::Line { line, pair } = c.value else {
         panic!("expected a line")
     };
@@ -257,6 +258,20 @@ fn tiers_escalate_and_agree() {
     assert_eq!(line.point, Vector3::new(exact(0.0), exact(0.0), exact(5.0)));
     // n = N₀ × N₁ with N₀ = (0,0,1)×(1,0,0) = (0,1,0), N₁ = (0,0,1)×(0,1,0) = (−1,0,0)
     assert_eq!(line.dir, Vector3::new(exact(0.0), exact(0.0), exact(1.0)));
+    // The same line with origins at 1e150 and 1e-150: the line test aligns numbers
+    // ~1000 bits apart, beyond the integers' 768 bits; expansions decide.
+    let w2 = plane([0.0, 0.0, 1e150], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]);
+    let w3 = plane([0.0, 0.0, 1e-150], [1.0, 1.0, 0.0], [0.0, 0.0, 2.0]);
+    let c = intersect_three_planes(&[p1.clone(), w2, w3]);
+    assert_eq!(c.arithmetic, Arithmetic::Expansion);
+    let ThreePlanes::Line { line, pair } = c.value else {
+        panic!("expected a line")
+    };
+    assert_eq!(pair, (0, 1));
+    assert_eq!(
+        line.point,
+        Vector3::new(exact(0.0), exact(0.0), exact(1e150))
+    );
     // The same configuration with tiny vectors (products below 2^-969 are not
     // error-free in doubles): rationals.
     let t = 1e-170;

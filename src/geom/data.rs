@@ -8,9 +8,8 @@ use rug::Rational;
 
 use super::objects::{Coord, Line, Line2, Plane, Segment, Segment2};
 use crate::num::dd::{Dd, ProductMode};
-use crate::num::expansion::Expansion;
-use crate::num::ratio::Ratio;
-use crate::num::ring::{cross3, dot3, sub2, sub3, Field, Ring, V2, V3};
+use crate::num::ratio::{Ratio, SignedRing};
+use crate::num::ring::{cross3, dot3, scale3, sub2, sub3, Field, Ring, V2, V3};
 
 /// Conversion of an input coordinate into a ring (exact for every pair used).
 pub trait Lift<R> {
@@ -32,9 +31,10 @@ impl Lift<Rational> for Rational {
         self.clone()
     }
 }
-impl Lift<Ratio<Expansion>> for f64 {
-    fn lift(&self) -> Ratio<Expansion> {
-        <Ratio<Expansion> as Field>::from_f64(*self)
+impl<E: SignedRing> Lift<Ratio<E>> for f64 {
+    #[inline(always)]
+    fn lift(&self) -> Ratio<E> {
+        <Ratio<E> as Field>::from_f64(*self)
     }
 }
 impl<M: ProductMode> Lift<Dd<M>> for f64 {
@@ -207,6 +207,15 @@ impl<R: Ring> PlaneData<R> {
         match self {
             PlaneData::Param { o, n, .. } => dot3(n, &sub3(x, o)),
             PlaneData::Implicit { n, d } => dot3(n, x).plus(d),
+        }
+    }
+    /// `w·f(x/w)` for the point given by homogeneous coordinates `(x, w)`, `w ≠ 0`: zero
+    /// exactly when `x/w` lies on the plane, and a polynomial (no division).
+    #[inline(always)]
+    pub(crate) fn value_at_homogeneous(&self, x: &V3<R>, w: &R) -> R {
+        match self {
+            PlaneData::Param { o, n, .. } => dot3(n, &sub3(x, &scale3(w, o))),
+            PlaneData::Implicit { n, d } => dot3(n, x).plus(&d.times(w)),
         }
     }
     /// `h` with the plane `N·x = h`.

@@ -13,14 +13,16 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::{LineData, Linear, PlaneData};
-use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
+};
 use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{bound, dispatch_fma, extend_scale, group_scale, round_over, Denominator};
 use crate::num::ratio::Ratio;
-use crate::num::ring::{det3, dot3, each, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
 /// Where a line meets a plane: the point, the line parameter `t` and, for a parametric
@@ -94,7 +96,9 @@ pub(crate) fn terms_from<R: Ring>(l: &LineData<R>, p: &PlaneData<R>, den: R, f0:
     let uvnum = match p {
         PlaneData::Param { o, u, v, .. } => {
             let w = sub3(&l.o, o);
-            Some([det3(&w, v, &l.d), det3(u, &w, &l.d)])
+            // det(w, s₂, c') = w·(s₂ × c'), det(s₁, w, c') = w·(c' × s₁): the cross
+            // products of inputs are exact products, one rounding each.
+            Some([dot3(&w, &cross3(v, &l.d)), dot3(&w, &cross3(&l.d, u))])
         }
         PlaneData::Implicit { .. } => None,
     };
@@ -156,25 +160,60 @@ pub fn intersect_line_plane_exact(
 }
 
 /// Certified: the exact verdict for the double inputs, coordinates correctly rounded
-/// with enclosures. Tiers: the double-double filter (generic input), then rationals.
+/// with enclosures. Tiers: the double-double filter (generic input), fixed-width
+/// integers, expansions, rationals.
 pub fn intersect_line_plane(
     line: Linear<f64>,
     plane: &Plane<f64>,
 ) -> Certified<LinePlane<Rounded>> {
-    if let Some(r) = fast_dispatch(line, plane) {
-        return filter_certified(r);
+    dispatch_fma!(certified(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(
+    line: Linear<f64>,
+    plane: &Plane<f64>,
+) -> Certified<LinePlane<Rounded>> {
+    match fast::<M>(line, plane) {
+        Some(r) => filter_certified(r),
+        None => exact_tiers(line, plane),
     }
-    if let Some(c) = expansion_tier(|r| {
-        let l: LineData<Ratio<Expansion>> = line.data();
-        core(&l, &PlaneData::new(plane)).map(|q| r.round(q))
-    }) {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<Rounded>> {
+    ring_tier_answer::<SmallInteger>(line, plane)
+        .or_else(|| ring_tier_answer::<WideInteger>(line, plane))
+        .or_else(|| ring_tier_answer::<Expansion>(line, plane))
+        .unwrap_or_else(|| rational_tier(line, plane))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(line: Linear<f64>, plane: &Plane<f64>) -> Certified<LinePlane<Rounded>> {
     let l: LineData<Rational> = line.data();
     let p: PlaneData<Rational> = PlaneData::new(plane);
     let mut rounder = Rounder::default();
     let r = core(&l, &p).map(|q| rounder.round(q));
     rounder.certify(r)
+}
+
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(always)]
+fn ring_tier_answer<E: ExactRing>(
+    line: Linear<f64>,
+    plane: &Plane<f64>,
+) -> Option<Certified<LinePlane<Rounded>>> {
+    ring_tier::<E, _>(|r| {
+        let l: LineData<Ratio<E>> = line.data();
+        core(&l, &PlaneData::new(plane)).map(|q| r.round(q))
+    })
 }
 
 /// Filter constants, as `k·u²`, re-derived by `tests::filter_constants`: each is the
@@ -191,11 +230,7 @@ pub fn intersect_line_plane(
 /// `451 − 3·89 = 184u²`. The test evaluates exactly these rules.
 const EPS_DEN: f64 = 452.0 * U * U;
 const EPS_PNUM: f64 = 2580.0 * U * U;
-const EPS_UVNUM: f64 = 1240.0 * U * U;
-
-fn fast_dispatch(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
-    dispatch_fma!(fast(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>>)
-}
+const EPS_UVNUM: f64 = 1198.0 * U * U;
 
 /// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's
 /// origin, an implicit plane's `|d|/m_n`), the line direction `L` (`P` for a segment,

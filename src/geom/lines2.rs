@@ -18,7 +18,9 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::data::{Line2Data, Linear2};
-use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
+};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
@@ -222,17 +224,49 @@ pub fn intersect_linear2_exact(
 
 /// Certified: exact verdict, correctly rounded point and parameters.
 pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
-    if let Some(r) = fast_dispatch(a, b) {
-        return filter_certified(r);
+    dispatch_fma!(certified(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(
+    a: Linear2<f64>,
+    b: Linear2<f64>,
+) -> Certified<Intersection2<Rounded>> {
+    match fast::<M>(a, b) {
+        Some(r) => filter_certified(r),
+        None => exact_tiers(a, b),
     }
-    if let Some(c) =
-        expansion_tier(|r| core::<Ratio<Expansion>>(&a.data(), &b.data()).map(|q| r.round(q)))
-    {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
+    ring_tier_answer::<SmallInteger>(a, b)
+        .or_else(|| ring_tier_answer::<WideInteger>(a, b))
+        .or_else(|| ring_tier_answer::<Expansion>(a, b))
+        .unwrap_or_else(|| rational_tier(a, b))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
     let mut r = Rounder::default();
     let value = core::<Rational>(&a.data(), &b.data()).map(|q| r.round(q));
     r.certify(value)
+}
+
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(always)]
+fn ring_tier_answer<E: ExactRing>(
+    a: Linear2<f64>,
+    b: Linear2<f64>,
+) -> Option<Certified<Intersection2<Rounded>>> {
+    ring_tier::<E, _>(|r| core::<Ratio<E>>(&a.data(), &b.data()).map(|q| r.round(q)))
 }
 
 /// Filter constants (`k·u²`), re-derived by `tests::filter_constants` (rules as in
@@ -241,10 +275,6 @@ pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersec
 const EPS_DELTA: f64 = 155.0 * U * U;
 const EPS_T: f64 = 155.0 * U * U;
 const EPS_P: f64 = 1109.0 * U * U;
-
-fn fast_dispatch(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>> {
-    dispatch_fma!(fast(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection2<Rounded>>)
-}
 
 /// Scales `(positions, direction)` of a 2D linear object.
 fn scales(l: &Linear2<f64>) -> Option<(f64, f64)> {

@@ -16,13 +16,16 @@
 //! with `e = −f_b(a₀)`, `g = n·(x_r − a₀)`; on `b` the same with the roles swapped and
 //! determinant `−|n|²`.
 //!
-//! `n = 0` exactly: `Coincident` if `h_a N_b = h_b N_a` (planes `N·x = h`), else `Parallel`.
+//! `n = 0` exactly: `Coincident` if the planes share a point (`f_a(o_b) = 0`, or
+//! `h_a N_b = h_b N_a` for two implicit planes `N·x = h`), else `Parallel`.
 
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::PlaneData;
-use super::exact_tier::{expansion_tier, filter_certified, ExpansionRounder, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, RingRounder, Rounder, SmallInteger, WideInteger,
+};
 use super::objects::Plane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
@@ -132,17 +135,29 @@ fn param_terms<R: Ring>(
     n: &V3<R>,
     x_r: &V3<R>,
     on_a: bool,
+    other_at_origin: Option<&R>,
 ) -> Option<ParamTerms<R>> {
     let PlaneData::Param { o, u, v, .. } = q else {
         return None;
     };
     let no = other.n();
-    let e = other.value_at(o).negate();
-    let g = dot3(n, &sub3(x_r, o));
     let (nu, nv) = (dot3(no, u), dot3(no, v));
     let (n_u, n_v) = (dot3(n, u), dot3(n, v));
-    let un = e.times(&n_v).minus(&nv.times(&g));
-    let vn = nu.times(&g).minus(&e.times(&n_u));
+    let (un, vn) = match other_at_origin {
+        // x_r = o: g = 0 and e = −f_other(x_r), already known.
+        Some(f) => {
+            let e = f.negate();
+            (e.times(&n_v), e.times(&n_u).negate())
+        }
+        None => {
+            let e = other.value_at(o).negate();
+            let g = dot3(n, &sub3(x_r, o));
+            (
+                e.times(&n_v).minus(&nv.times(&g)),
+                nu.times(&g).minus(&e.times(&n_u)),
+            )
+        }
+    };
     Some(if on_a {
         ParamTerms {
             num: [un, vn],
@@ -156,6 +171,7 @@ fn param_terms<R: Ring>(
     })
 }
 
+#[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` with its `n`
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
     terms_from(a, b, cross3(a.n(), b.n()))
@@ -166,18 +182,26 @@ pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
 pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> Terms<R> {
     let nn = dot3(&n, &n);
     let x_r = reference(a, b);
-    let fa = a.value_at(&x_r);
-    let fb = b.value_at(&x_r);
-    let ta = cross3(b.n(), &n);
-    let tb = cross3(&n, a.n());
+    // The plane whose origin is x_r vanishes there: its term of the point is left out,
+    // and its parameters reuse the other plane's value at x_r.
+    let at_b = b.origin().is_some();
+    let at_a = !at_b && a.origin().is_some();
+    let fa = if at_a { R::zero() } else { a.value_at(&x_r) };
+    let fb = if at_b { R::zero() } else { b.value_at(&x_r) };
+    let ta = (!at_a).then(|| cross3(b.n(), &n));
+    let tb = (!at_b).then(|| cross3(&n, a.n()));
     let pnum = each!(i in [0, 1, 2] => {
-        x_r[i]
-            .times(&nn)
-            .minus(&fa.times(&ta[i]))
-            .minus(&fb.times(&tb[i]))
+        let mut acc = x_r[i].times(&nn);
+        if let Some(ta) = &ta {
+            acc = acc.minus(&fa.times(&ta[i]));
+        }
+        if let Some(tb) = &tb {
+            acc = acc.minus(&fb.times(&tb[i]));
+        }
+        acc
     });
-    let on_a = param_terms(a, b, &n, &x_r, true);
-    let on_b = param_terms(b, a, &n, &x_r, false);
+    let on_a = param_terms(a, b, &n, &x_r, true, at_a.then_some(&fb));
+    let on_b = param_terms(b, a, &n, &x_r, false, at_b.then_some(&fa));
     Terms {
         n,
         nn,
@@ -191,8 +215,7 @@ pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) 
 pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R> {
     let n = cross3(a.n(), b.n());
     if is_zero3(&n) {
-        let diff = sub3(&scale3(&a.offset(), b.n()), &scale3(&b.offset(), a.n()));
-        return if is_zero3(&diff) {
+        return if coincide_parallel(a, b) {
             PlanePlane::Coincident
         } else {
             PlanePlane::Parallel
@@ -201,7 +224,23 @@ pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R
     PlanePlane::Line(finish(terms_from(a, b, n)))
 }
 
-fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
+/// Whether two planes with parallel normals (`N_a × N_b = 0`) are the same plane: they
+/// are iff they share one point, so when one of them has an origin the test is that
+/// the other vanishes there (`f_a(o_b) = 0`, degree 3), otherwise (two implicit planes
+/// `N·x = h`) that `h_a N_b = h_b N_a`.
+pub(crate) fn coincide_parallel<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> bool {
+    match (a.origin(), b.origin()) {
+        (_, Some(o)) => a.value_at(o).is_zero(),
+        (Some(o), None) => b.value_at(o).is_zero(),
+        (None, None) => is_zero3(&sub3(
+            &scale3(&a.offset(), b.n()),
+            &scale3(&b.offset(), a.n()),
+        )),
+    }
+}
+
+/// The line from its polynomials (the divisions by `|n|²`).
+pub(crate) fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
     let nn = tm.nn;
     let div = |q: &R| q.divide(&nn);
     let pl = |p: ParamTerms<R>| ParamLine {
@@ -215,11 +254,6 @@ fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
         on_a: tm.on_a.map(pl),
         on_b: tm.on_b.map(pl),
     }
-}
-
-/// The line of two planes known to intersect (`N_a × N_b ≠ 0`), in the field.
-pub(crate) fn line_of<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlaneLine<R> {
-    finish(terms(a, b))
 }
 
 /// Plain f64 (uncertified; `n == 0.0` decides parallelism).
@@ -258,31 +292,60 @@ pub(crate) fn round_line(l: PlaneLine<Rational>, r: &mut Rounder) -> PlaneLine<R
     }
 }
 
-/// Round an exact plane line from the expansion tier (unscaled directions only).
-pub(crate) fn round_line_expansion(
-    l: PlaneLine<Ratio<Expansion>>,
-    r: &mut ExpansionRounder,
+/// Round an exact plane line from an exact-ring tier (unscaled directions only).
+pub(crate) fn round_line_ring<E: ExactRing>(
+    l: PlaneLine<Ratio<E>>,
+    r: &mut RingRounder<E>,
 ) -> PlaneLine<Rounded> {
     r.check_unscaled(l.dir.as_slice());
     l.map(|x| r.round(x))
 }
 
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(always)]
+fn ring_tier_answer<E: ExactRing>(
+    a: &Plane<f64>,
+    b: &Plane<f64>,
+) -> Option<Certified<PlanePlane<Rounded>>> {
+    ring_tier::<E, _>(
+        |r| match core::<Ratio<E>>(&PlaneData::new(a), &PlaneData::new(b)) {
+            PlanePlane::Line(l) => PlanePlane::Line(round_line_ring(l, r)),
+            PlanePlane::Parallel => PlanePlane::Parallel,
+            PlanePlane::Coincident => PlanePlane::Coincident,
+        },
+    )
+}
+
 /// Certified: exact verdict, correctly rounded point, direction and parameter lines.
 pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
-    if let Some(l) = fast_dispatch(a, b) {
-        return filter_certified(PlanePlane::Line(l));
+    dispatch_fma!(certified(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
+    match fast::<M>(a, b) {
+        Some(l) => filter_certified(PlanePlane::Line(l)),
+        None => exact_tiers(a, b),
     }
-    if let Some(c) =
-        expansion_tier(
-            |r| match core::<Ratio<Expansion>>(&PlaneData::new(a), &PlaneData::new(b)) {
-                PlanePlane::Line(l) => PlanePlane::Line(round_line_expansion(l, r)),
-                PlanePlane::Parallel => PlanePlane::Parallel,
-                PlanePlane::Coincident => PlanePlane::Coincident,
-            },
-        )
-    {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
+    ring_tier_answer::<SmallInteger>(a, b)
+        .or_else(|| ring_tier_answer::<WideInteger>(a, b))
+        .or_else(|| ring_tier_answer::<Expansion>(a, b))
+        .unwrap_or_else(|| rational_tier(a, b))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
     let mut r = Rounder::default();
     let res = match core::<Rational>(&PlaneData::new(a), &PlaneData::new(b)) {
         PlanePlane::Line(l) => PlanePlane::Line(round_line(l, &mut r)),
@@ -316,10 +379,6 @@ pub(crate) fn plane_scales(p: &Plane<f64>, mp: f64) -> Option<(f64, f64, f64)> {
             Some((m, m, extend_scale(Some(mp), *d, m)?))
         }
     }
-}
-
-fn fast_dispatch(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-    dispatch_fma!(fast(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>>)
 }
 
 /// The filter tier: groups `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees

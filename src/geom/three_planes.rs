@@ -12,7 +12,8 @@
 //! point, of lower degree (§16.7's `(t, τ) = (−1, 2)` needs no orthogonal basis).
 //!
 //! `D = 0` exactly: if every `N_i × N_j = 0`, all normals are parallel: `Plane` when all
-//! three coincide (`h_i N_j = h_j N_i`), else `Empty`. Otherwise the first pair `(i, j)`
+//! three coincide (plane 0 shares a point with each other, see
+//! `plane_plane::coincide_parallel`), else `Empty`. Otherwise the first pair `(i, j)`
 //! (in the order (0,1), (0,2), (1,2)) with `N_i × N_j ≠ 0` gives the line of §8; it is
 //! the answer if it lies in the third plane (`f_k(p) = 0`; its direction is orthogonal to
 //! `N_k` because `D = 0`), else `Empty`. This covers two coincident planes crossed by a
@@ -23,15 +24,20 @@ use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
 use super::data::PlaneData;
-use super::exact_tier::{expansion_tier, filter_certified, Rounder};
+use super::exact_tier::{
+    filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
+};
 use super::objects::Plane;
-use super::plane_plane::{line_of, plane_scales, round_line, round_line_expansion, PlaneLine};
+use super::plane_plane::{
+    coincide_parallel, finish, plane_scales, round_line, round_line_ring,
+    terms_from as terms_from_pair, PlaneLine,
+};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{bound, dispatch_fma, round_over, Denominator, SCALE_MIN};
 use crate::num::ratio::Ratio;
-use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
+use crate::num::ring::{cross3, dot3, each, is_zero3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
 
 /// The result of three planes.
@@ -99,35 +105,50 @@ pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
 #[inline(always)]
 pub(crate) fn terms_from<R: Ring>(p: &[PlaneData<R>; 3], c: &[V3<R>; 3], det: R) -> Terms<R> {
     let n = [p[0].n(), p[1].n(), p[2].n()];
-    let x_r = p
-        .iter()
-        .find_map(|q| q.origin())
+    // x_r is the origin of plane k0 (the first parametric one), where f_k0 vanishes:
+    // its term is left out, and its parameters reuse the other two values f_i(x_r).
+    let k0 = p.iter().position(|q| q.origin().is_some());
+    let x_r = k0
+        .and_then(|k| p[k].origin())
         .cloned()
         .unwrap_or_else(|| [R::zero(), R::zero(), R::zero()]);
-    let f = [
-        p[0].value_at(&x_r),
-        p[1].value_at(&x_r),
-        p[2].value_at(&x_r),
-    ];
-    let pnum = each!(m in [0, 1, 2] => {
-        x_r[m]
-            .times(&det)
-            .minus(&f[0].times(&c[0][m]))
-            .minus(&f[1].times(&c[1][m]))
-            .minus(&f[2].times(&c[2][m]))
+    let f = each!(i in [0, 1, 2] => {
+        if k0 == Some(i) {
+            R::zero()
+        } else {
+            p[i].value_at(&x_r)
+        }
     });
-    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k));
+    let pnum = each!(m in [0, 1, 2] => {
+        let mut acc = x_r[m].times(&det);
+        for i in 0..3 {
+            if k0 != Some(i) {
+                acc = acc.minus(&f[i].times(&c[i][m]));
+            }
+        }
+        acc
+    });
+    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k, (k0 == Some(k)).then_some(&f)));
     Terms { det, pnum, params }
 }
 
-/// Numerators (over `D`) of the parameters of the point on parametric plane `k`.
+/// Numerators (over `D`) of the parameters of the point on parametric plane `k`;
+/// `f_at_origin`: the planes' values at `o_k` when already computed.
 #[inline(always)]
-fn plane_params<R: Ring>(p: &[PlaneData<R>; 3], n: &[&V3<R>; 3], k: usize) -> Option<V2<R>> {
+fn plane_params<R: Ring>(
+    p: &[PlaneData<R>; 3],
+    n: &[&V3<R>; 3],
+    k: usize,
+    f_at_origin: Option<&[R; 3]>,
+) -> Option<V2<R>> {
     let PlaneData::Param { o, u, v, .. } = &p[k] else {
         return None;
     };
     let (i, j) = ((k + 1) % 3, (k + 2) % 3);
-    let (fi, fj) = (p[i].value_at(o), p[j].value_at(o));
+    let (fi, fj) = match f_at_origin {
+        Some(f) => (f[i].clone(), f[j].clone()),
+        None => (p[i].value_at(o), p[j].value_at(o)),
+    };
     let un = fj.times(&dot3(n[i], v)).minus(&fi.times(&dot3(n[j], v)));
     let vn = fi.times(&dot3(n[j], u)).minus(&fj.times(&dot3(n[i], u)));
     Some([un, vn])
@@ -147,29 +168,33 @@ pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
                 .map(|q| q.map(|[u, v]| Vector2::new(u.divide(d), v.divide(d)))),
         };
     }
-    // N_i × N_j for the pairs (0,1), (0,2), (1,2) are ±c[2], ±c[1], c[0].
-    for (i, j, k, cij) in [(0, 1, 2, &c[2]), (0, 2, 1, &c[1]), (1, 2, 0, &c[0])] {
+    // N_i × N_j for the pairs (0,1), (0,2), (1,2) are c[2], −c[1], c[0]: the line's
+    // direction is taken from them rather than recomputed.
+    for (i, j, k, cij, flip) in [
+        (0, 1, 2, &c[2], false),
+        (0, 2, 1, &c[1], true),
+        (1, 2, 0, &c[0], false),
+    ] {
         if !is_zero3(cij) {
-            let line = line_of(&p[i], &p[j]);
-            let point = [
-                line.point[0].clone(),
-                line.point[1].clone(),
-                line.point[2].clone(),
-            ];
-            return if p[k].value_at(&point).is_zero() {
-                ThreePlanes::Line { line, pair: (i, j) }
+            let n = if flip {
+                [cij[0].negate(), cij[1].negate(), cij[2].negate()]
+            } else {
+                cij.clone()
+            };
+            // The line lies in plane k iff its point p = pnum/|n|² does: tested on the
+            // numerators (|n|²·f_k(p), a polynomial), before any division.
+            let tm = terms_from_pair(&p[i], &p[j], n);
+            return if p[k].value_at_homogeneous(&tm.pnum, &tm.nn).is_zero() {
+                ThreePlanes::Line {
+                    line: finish(tm),
+                    pair: (i, j),
+                }
             } else {
                 ThreePlanes::Empty
             };
         }
     }
-    let same = |a: &PlaneData<R>, b: &PlaneData<R>| {
-        is_zero3(&sub3(
-            &scale3(&a.offset(), b.n()),
-            &scale3(&b.offset(), a.n()),
-        ))
-    };
-    if same(&p[0], &p[1]) && same(&p[0], &p[2]) {
+    if coincide_parallel(&p[0], &p[1]) && coincide_parallel(&p[0], &p[2]) {
         ThreePlanes::Plane
     } else {
         ThreePlanes::Empty
@@ -196,25 +221,34 @@ pub fn intersect_three_planes_exact(p: &[Plane<Rational>; 3]) -> ThreePlanes<Rat
 
 /// Certified: exact verdict, correctly rounded coordinates and parameters.
 pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
-    if let Some(r) = fast_dispatch(p) {
-        return filter_certified(r);
+    dispatch_fma!(certified(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>>)
+}
+
+/// The filter, then the exact tiers (instantiated once per product mode, so that the
+/// answer is built in place).
+#[inline(always)]
+fn certified<M: ProductMode>(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
+    match fast::<M>(p) {
+        Some(r) => filter_certified(r),
+        None => exact_tiers(p),
     }
-    if let Some(c) = expansion_tier(|r| {
-        let data: [PlaneData<Ratio<Expansion>>; 3] = [
-            PlaneData::new(&p[0]),
-            PlaneData::new(&p[1]),
-            PlaneData::new(&p[2]),
-        ];
-        match core(&data) {
-            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
-                line: round_line_expansion(line, r),
-                pair,
-            },
-            other => other.map(|q| r.round(q)),
-        }
-    }) {
-        return c;
-    }
+}
+
+/// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,
+/// rationals (which always answer). Out of line, so that the filter's caller keeps a
+/// small stack frame.
+#[cold]
+#[inline(never)]
+fn exact_tiers(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
+    ring_tier_answer::<SmallInteger>(p)
+        .or_else(|| ring_tier_answer::<WideInteger>(p))
+        .or_else(|| ring_tier_answer::<Expansion>(p))
+        .unwrap_or_else(|| rational_tier(p))
+}
+
+/// The last tier, in `rug::Rational`.
+#[inline(never)]
+fn rational_tier(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Rounded>> {
     let data: [PlaneData<Rational>; 3] = [
         PlaneData::new(&p[0]),
         PlaneData::new(&p[1]),
@@ -231,16 +265,31 @@ pub fn intersect_three_planes(p: &[Plane<f64>; 3]) -> Certified<ThreePlanes<Roun
     r.certify(res)
 }
 
+/// The exact decision in the ring `E` ([`ring_tier`]): `None` when `E` lost exactness.
+#[inline(always)]
+fn ring_tier_answer<E: ExactRing>(p: &[Plane<f64>; 3]) -> Option<Certified<ThreePlanes<Rounded>>> {
+    ring_tier::<E, _>(|r| {
+        let data: [PlaneData<Ratio<E>>; 3] = [
+            PlaneData::new(&p[0]),
+            PlaneData::new(&p[1]),
+            PlaneData::new(&p[2]),
+        ];
+        match core(&data) {
+            ThreePlanes::Line { line, pair } => ThreePlanes::Line {
+                line: round_line_ring(line, r),
+                pair,
+            },
+            other => other.map(|q| r.round(q)),
+        }
+    })
+}
+
 /// Filter constants (`k·u²`), re-derived by `tests::filter_constants` with
 /// [`crate::num::error_bound::ErrorBound`] over all eight kind combinations (rules as in
 /// `line_plane`): `D` (degree 6), point numerators (7), parameter numerators (6).
 const EPS_DET: f64 = 5598.0 * U * U;
 const EPS_PNUM: f64 = 66138.0 * U * U;
 const EPS_PARAM: f64 = 20027.0 * U * U;
-
-fn fast_dispatch(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
-    dispatch_fma!(fast(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>>)
-}
 
 /// The filter tier (point case only). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`,
 /// `G_2`; with `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`:

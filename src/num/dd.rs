@@ -41,6 +41,10 @@ pub trait ProductMode: Copy + 'static {
     fn two_prod(a: f64, b: f64) -> (f64, f64);
     /// `a·b + c` with one or two roundings.
     fn mul_add(a: f64, b: f64, c: f64) -> f64;
+    /// `p − c·q` with one rounding, provided `fl(c·q)` lies within a factor 2 of `p`
+    /// (then `p − fl(c·q)` is exact by Sterbenz's lemma and only the final subtraction
+    /// of the product's error rounds; with FMA it is one fused operation).
+    fn residual(p: f64, c: f64, q: f64) -> f64;
 }
 
 /// Products through `f64::mul_add` (an instruction where the caller enables FMA).
@@ -60,6 +64,10 @@ impl ProductMode for WithFma {
     fn mul_add(a: f64, b: f64, c: f64) -> f64 {
         a.mul_add(b, c)
     }
+    #[inline(always)]
+    fn residual(p: f64, c: f64, q: f64) -> f64 {
+        (-c).mul_add(q, p)
+    }
 }
 
 impl ProductMode for WithoutFma {
@@ -74,6 +82,11 @@ impl ProductMode for WithoutFma {
     #[inline(always)]
     fn mul_add(a: f64, b: f64, c: f64) -> f64 {
         a * b + c
+    }
+    #[inline(always)]
+    fn residual(p: f64, c: f64, q: f64) -> f64 {
+        let (m, e) = Self::two_prod(c, q);
+        (p - m) - e
     }
 }
 

@@ -43,7 +43,7 @@ impl Poison {
     pub fn is_set() -> bool {
         POISONED.with(|p| p.get())
     }
-    fn set() {
+    pub(crate) fn set() {
         POISONED.with(|p| p.set(true));
     }
 }

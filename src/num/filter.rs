@@ -23,7 +23,7 @@
 
 use std::cmp::Ordering;
 
-use super::dd::{two_sum, Dd, ProductMode, ETA, U};
+use super::dd::{fast_two_sum, two_sum, Dd, ProductMode, ETA, U};
 use super::round::{next_up, Rounded};
 
 /// Largest group maximum the filter accepts: 2¹⁰⁰.
@@ -91,34 +91,58 @@ pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
     }
 }
 
-/// A denominator prepared once for several [`round_ratio`] calls: normalised, with a
-/// lower bound on its exact magnitude and its reciprocal (for the candidate only).
+/// A denominator prepared once for several [`round_over`] calls: normalised, with a
+/// proven lower bound on its exact magnitude, its reciprocal (for candidates only) and
+/// the two factors of [`round_over`]'s error bound that depend on it alone.
 #[derive(Debug, Clone, Copy)]
 pub struct Denominator<M: ProductMode> {
     q: Dd<M>,
     eq: f64,
-    q_lo: f64,
     inv: f64,
+    /// `|q.l|`.
+    ql: f64,
+    /// An upper bound on `1/|Q|`.
+    inv_lo: f64,
+    /// An upper bound on `|1/Q − inv|/|inv|·|inv|`, see [`round_over`].
+    k: f64,
 }
 
 impl<M: ProductMode> Denominator<M> {
     /// `None` when `q` is out of the accepted range or its sign is not decided by `eq`.
+    ///
+    /// `q` is used as it is (not renormalised: that would delay the reciprocal by a
+    /// `two_sum`; the bounds below hold for any split `q = q.h + q.l`). With
+    /// `inv = fl(1/q.h)`, `1/|q.h| ≤ |inv|/(1 − u) ≤ |inv|(1 + 2u)`, so
+    /// `x = (|q.l| + eq)·|inv|·(1 + 8u) ≥ (|q.l| + eq)/|q.h|` (three roundings and the
+    /// reciprocal's: `(1 − u)⁴(1 + 8u) ≥ 1`). Since
+    /// `|Q| ≥ |q.h| − |q.l| − eq ≥ |q.h|(1 − x)`, `x ≤ 1/2` decides the sign of `Q` (that
+    /// of `q.h`) and, with `1/(1 − x) ≤ 1 + 2x`, `inv_lo = |inv|(1 + 2x)(1 + 8u) ≥ 1/|Q|`
+    /// (no second division; `1/|Q| ≤ |inv|(1 + 2u)(1 + 2x)`, and the three roundings of
+    /// `inv_lo` lose at most `(1 − u)³`: `(1 − u)³(1 + 8u) ≥ 1 + 2u`). `k ≥ |1/Q − inv|`:
+    /// `|1/Q − 1/q.h| ≤ |Q − q.h|/(|Q||q.h|) ≤ (|q.l| + eq)·inv_lo·|inv|(1 + 2u)` and
+    /// `|1/q.h − inv| ≤ u/|q.h| ≤ u|inv|(1 + 2u)`; `k = ((|q.l| + eq)·inv_lo + u)·|inv|·
+    /// (1 + 8u)` covers both and its own four roundings (`(1 − u)⁵(1 + 8u) ≥ 1 + 2u`).
     #[inline(always)]
     pub fn new(q: &Dd<M>, eq: f64) -> Option<Self> {
-        let q = q.normalized();
         let qa = q.h.abs();
         if !(qa >= TINY && qa <= C_MAX && eq <= C_MAX) {
             return None;
         }
-        let q_lo = (qa - add_up(q.l.abs(), eq)) * (1.0 - 4.0 * U);
-        if !(q_lo > 0.0) {
+        let inv = 1.0 / q.h;
+        let ia = inv.abs();
+        let ql = q.l.abs();
+        let x = (ql + eq) * ia * (1.0 + 8.0 * U);
+        if !(x <= 0.5) {
             return None;
         }
+        let inv_lo = ia * (1.0 + 2.0 * x) * (1.0 + 8.0 * U);
         Some(Denominator {
-            q,
+            q: *q,
             eq,
-            q_lo,
-            inv: 1.0 / q.h,
+            inv,
+            ql,
+            inv_lo,
+            k: ((ql + eq) * inv_lo + U) * ia * (1.0 + 8.0 * U),
         })
     }
 }
@@ -127,76 +151,88 @@ const TINY: f64 = 1.1830521861667747e-271; // 2^-900
 const C_MIN: f64 = 1.0261342003245941e-289; // 2^-960
 const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
 
-/// The exact quotient `P/Q` correctly rounded (`d` prepared from `Q`), where `p`, `q` approximate `P`, `Q` with
-/// absolute errors at most `ep`, `eq` — if the bounds decide the rounding and `P/Q` is
-/// provably not a double (a value that may be a double goes to the exact tier, which
-/// reports `lo = hi`).
-///
-/// Method: a candidate `c ≈ p/q` (one division, one correction step), the residual
-/// `R = p − c·q` in double-double, and the test `|R/Q| < min(gap below c, gap above c)/2`,
-/// i.e. `P/Q` lies strictly inside the rounding cell of `c`. With `q` normalised,
-/// `(m, e) = two_prod(c, q.h)` (exact), `e' = e + c·q.l` (error `≤ u|c q.l| + u|e'|`),
-/// `(s, t) = two_sum(p.h, −m)` (exact), `r_l = (t + p.l) − e'` (error
-/// `≤ u|t + p.l| + u|r_l|`) and `R̂ = s + r_l` (error `≤ u|R̂|`): so
-/// `|R − R̂| ≤ ep + |c|·eq + u(|c q.l| + |e'| + |t + p.l| + |r_l|) + u|R̂|`, taken with a
-/// `(1 + 16u)` margin for the (at most nine) roundings of the bound itself and `8η` for
-/// underflow in the residual and in the bound.
-/// Accepted only for `2⁻⁹⁰⁰ ≤ |p.h|, |q.h| ≤ 2¹⁰⁰⁰` and `2⁻⁹⁶⁰ ≤ |c| ≤ 2¹⁰⁰⁰`, so that no
-/// quantity of the test underflows or overflows and half an ulp of `c` is a normal double.
+/// Half the smaller of the two gaps next to the double `c` (`|c|` in `[2⁻⁹⁶⁰, 2¹⁰⁰⁰]`):
+/// half an ulp, or a quarter of an ulp at a power of two (where the gap below is half
+/// the gap above). A power of two, computed exactly from the exponent bits.
 #[inline(always)]
-pub fn round_over<M: ProductMode>(p: &Dd<M>, ep: f64, d: &Denominator<M>) -> Option<Rounded> {
-    let (q, eq, q_lo, inv) = (d.q, d.eq, d.q_lo, d.inv);
-    // `p` is used as it is: the bound below is computed from the actual parts, so it
-    // holds whether or not `p` is normalised (a poorly normalised `p` only spoils the
-    // candidate, and then the test fails).
-    let pa = p.h.abs();
-    if !(pa >= TINY && pa <= C_MAX && ep <= C_MAX) {
-        return None;
-    }
-    // Candidate: c₀ = p.h/q.h, corrected once by the residual (c need not be right:
-    // a wrong candidate fails the test below).
-    let c0 = p.h * inv;
-    let rem = M::mul_add(-c0, q.h, p.h) + (p.l - c0 * q.l);
-    let c = c0 + rem * inv;
-    let ca = c.abs();
-    if !(ca >= C_MIN && ca <= C_MAX) {
-        return None;
-    }
-    let (m, e) = M::two_prod(c, q.h);
-    let e2 = M::mul_add(c, q.l, e);
-    let (s, t) = two_sum(p.h, -m);
-    let tl = t + p.l;
-    let rl = tl - e2;
-    let r = s + rl;
-    let er = (ep + ca * eq + U * (ca * q.l.abs() + e2.abs() + tl.abs() + rl.abs() + r.abs()))
-        * (1.0 + 16.0 * U)
-        + 8.0 * ETA;
-    // Half the smaller gap next to c: half an ulp, or a quarter at a power of two.
-    let bits = c.to_bits();
-    let biased = (bits >> 52) & 0x7ff;
-    let half_ulp = f64::from_bits((biased - 53) << 52);
-    let half_gap = if bits & ((1u64 << 52) - 1) == 0 {
+fn half_gap(c: f64) -> f64 {
+    // 2^e with 2^e ≤ |c| < 2^(e+1): the exponent field alone (exact, no rounding).
+    let p = f64::from_bits(c.to_bits() & (0x7ffu64 << 52));
+    let half_ulp = p * U; // 2^(e−53), exact (normal)
+    if p == c.abs() {
         half_ulp * 0.5
     } else {
         half_ulp
-    };
-    let cell = half_gap * q_lo * (1.0 - 4.0 * U);
-    if !(add_up(r.abs(), er) < cell) {
+    }
+}
+
+/// The rounding of a value known to lie strictly between the finite non-zero double `c`
+/// and its neighbour on the side `above` (towards +∞ when true): the neighbour is the
+/// adjacent bit pattern (magnitude up when the side points away from 0).
+#[inline(always)]
+fn inexact(c: f64, above: bool) -> Rounded {
+    let bits = c.to_bits();
+    let away = above == (c > 0.0);
+    let nb = f64::from_bits(if away { bits + 1 } else { bits - 1 });
+    if above {
+        Rounded {
+            nearest: c,
+            lo: c,
+            hi: nb,
+        }
+    } else {
+        Rounded {
+            nearest: c,
+            lo: nb,
+            hi: c,
+        }
+    }
+}
+
+/// The exact quotient `P/Q` correctly rounded, where `p` approximates `P` with
+/// absolute error at most `ep` and `d` is prepared from `Q` ([`Denominator::new`]) — if
+/// the bounds decide the rounding and `P/Q` is provably not a double (a value that may
+/// be a double goes to the exact tiers, which report `lo = hi`).
+///
+/// Method (one candidate, one residual, no second product): `c₀ = p.h·inv`; the
+/// residual `R = P − c₀Q` is approximated by `r = r₁ + r₂` with `r₁ = p.h − c₀·q.h`
+/// (FMA: one rounding; without FMA: Dekker's exact product, `p.h − m` exact by
+/// Sterbenz since `c₀q.h` is within `4u` of `p.h`, one rounding) and
+/// `r₂ = p.l − c₀·q.l` (at most two roundings). Then
+///
+/// `|R − r| ≤ E = ep + |c₀|·eq + u(|r₁| + |c₀||q.l| + |r₂| + |r|)`
+///
+/// (the inputs' errors, `|c₀ (Q − q)|`, and the four roundings). With `δ = fl(r·inv)`
+/// and `P/Q = c₀ + R/Q`: `|R/Q − δ| ≤ E/|Q| + |r|·|1/Q − inv| + u|δ|
+/// ≤ ε = E·inv_lo + |r|·k + u|δ|` (see [`Denominator::new`]). `(c, t) =
+/// fast_two_sum(c₀, δ)` is exact when `|δ| ≤ |c₀|` (checked), so `P/Q − c = t + ρ`
+/// with `|ρ| ≤ ε`. If `ε < |t|` and `|t| + ε` is below half the smaller gap next to `c`,
+/// then `P/Q` lies strictly inside the rounding cell of `c`, on the side of `t`.
+/// The bound is evaluated with `(1 + 16u)` for its own roundings (a tree of depth at
+/// most ten over non-negative terms: `(1 − u)¹⁰(1 + 16u) ≥ 1`) and `8η` on each side of
+/// the division for underflows: of `r₁`, `r₂`, `r` and the bound's products in the
+/// residual's units (added to `E`), of `δ` and the bound's products in the quotient's.
+/// Accepted only for `|c| ∈ [2⁻⁹⁶⁰, 2¹⁰⁰⁰]` (so the gap is a normal double); overflow
+/// gives ∞ or NaN somewhere, and every comparison with NaN fails.
+#[inline(always)]
+pub fn round_over<M: ProductMode>(p: &Dd<M>, ep: f64, d: &Denominator<M>) -> Option<Rounded> {
+    let c0 = p.h * d.inv;
+    let r1 = M::residual(p.h, c0, d.q.h);
+    let r2 = M::mul_add(-c0, d.q.l, p.l);
+    let r = r1 + r2;
+    let delta = r * d.inv;
+    let ca = c0.abs();
+    let e_r = ep + ca * d.eq + U * (r1.abs() + ca * d.ql + r2.abs() + r.abs()) + 8.0 * ETA;
+    let eps = (e_r * d.inv_lo + r.abs() * d.k + U * delta.abs()) * (1.0 + 16.0 * U) + 8.0 * ETA;
+    let (c, t) = fast_two_sum(c0, delta);
+    let (ta, cabs) = (t.abs(), c.abs());
+    if !(delta.abs() <= ca && eps < ta && cabs >= C_MIN && cabs <= C_MAX) {
         return None;
     }
-    // c is the nearest double; P/Q − c = R/Q has the sign of R·Q.
-    if !(r.abs() > er) {
+    if !((ta + eps) * (1.0 + 4.0 * U) < half_gap(c)) {
         return None;
     }
-    let above = (r > 0.0) == (q.h > 0.0);
-    Some(Rounded::inexact(
-        c,
-        if above {
-            Ordering::Greater
-        } else {
-            Ordering::Less
-        },
-    ))
+    Some(inexact(c, t > 0.0))
 }
 
 /// The exact quotient `P/Q` correctly rounded (see [`round_over`], which does the work
@@ -206,10 +242,19 @@ pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Op
     round_over(p, ep, &Denominator::new(q, eq)?)
 }
 
-/// A polynomial value correctly rounded (see [`round_ratio`] with `Q = 1`).
+/// A polynomial value `P` correctly rounded, from `p` with `|P − p| ≤ ep`: `(c, t) =
+/// two_sum(p.h, p.l)` is exact, so `P − c = t + ρ`, `|ρ| ≤ ep`; accepted when
+/// `ep < |t|` and `|t| + ep` (rounded up by `(1 + 4u)`) is below half the smaller gap
+/// next to `c`, for `|c| ∈ [2⁻⁹⁶⁰, 2¹⁰⁰⁰]`. (A value that may be a double is left to
+/// the exact tiers, as in [`round_over`].)
 #[inline(always)]
 pub fn round_value<M: ProductMode>(p: &Dd<M>, ep: f64) -> Option<Rounded> {
-    round_ratio(p, ep, &Dd::from_f64(1.0), 0.0)
+    let (c, t) = two_sum(p.h, p.l);
+    let (ta, ca) = (t.abs(), c.abs());
+    if !(ep < ta && ca >= C_MIN && ca <= C_MAX && (ta + ep) * (1.0 + 4.0 * U) < half_gap(c)) {
+        return None;
+    }
+    Some(inexact(c, t > 0.0))
 }
 
 /// Call `$fast::<WithFma>` through a function compiled with FMA enabled when the CPU has
@@ -288,6 +333,65 @@ mod tests {
     fn rounding_test_agrees_with_exact_rounding() {
         check::<WithFma>();
         check::<WithoutFma>();
+        corners::<WithFma>();
+        corners::<WithoutFma>();
+    }
+
+    fn q(x: f64) -> Rational {
+        Rational::from_f64(x).unwrap()
+    }
+
+    /// Soundness at the extremes of the error bounds: whenever a rounding is accepted for
+    /// `p ± ep` over `q ± eq`, it is the rounding of every corner quotient; and with
+    /// exact data nearly every quotient is decided (the test is not vacuous).
+    fn corners<M: ProductMode>() {
+        let mut seed = 0x0DDB_1A5E_5BAD_5EEDu64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed >> 11) as f64 / (1u64 << 53) as f64 - 0.5
+        };
+        let (mut decided_exact, mut decided_loose) = (0, 0);
+        for i in 0..4000 {
+            let scale = 2f64.powi((i % 61) - 30);
+            let ph = next() * scale;
+            let p = Dd::<M>::from_parts(ph, ph * next() * 1e-16);
+            let qh = next() + 0.75 * next().signum();
+            let q_dd = Dd::<M>::from_parts(qh, qh * next() * 1e-16);
+            let (pv, qv) = (q(p.h) + q(p.l), q(q_dd.h) + q(q_dd.l));
+            if let Some(r) = round_ratio(&p, 0.0, &q_dd, 0.0) {
+                decided_exact += 1;
+                assert_eq!(r, round_rational(&(pv.clone() / &qv)));
+            }
+            // Error bounds of a few hundredths of an ulp of the quotient: accepted or not,
+            // an accepted rounding must hold at all four corners.
+            let ulp = (ph / qh).abs() * f64::EPSILON;
+            let (ep, eq) = (
+                ulp * qh.abs() * 0.03 * (next() + 0.5),
+                1e-18 * (next() + 0.5),
+            );
+            if let Some(r) = round_ratio(&p, ep, &q_dd, eq) {
+                decided_loose += 1;
+                for (dp, dq) in [(ep, eq), (ep, -eq), (-ep, eq), (-ep, -eq)] {
+                    let corner = (pv.clone() + q(dp)) / (qv.clone() + q(dq));
+                    assert_eq!(r, round_rational(&corner), "{i}");
+                }
+            }
+        }
+        assert!(decided_exact > 3990, "{decided_exact}");
+        assert!(decided_loose > 3000, "{decided_loose}");
+        // Values: (1 + 2^-60) rounds down to 1, just above; 1/3 as a double-double.
+        let v = Dd::<M>::from_parts(1.0, 2f64.powi(-60));
+        assert_eq!(
+            round_value(&v, 0.0),
+            Some(Rounded::inexact(1.0, Ordering::Greater))
+        );
+        assert_eq!(round_value(&v, 2f64.powi(-59)), None);
+        let third = Dd::<M>::from_parts(1.0 / 3.0, 1.850371707708594e-17);
+        let truth = round_rational(&(q(third.h) + q(third.l)));
+        assert_eq!(round_value(&third, 1e-30), Some(truth));
+        assert_eq!(round_value(&Dd::<M>::from_f64(3.0), 0.0), None);
     }
 
     #[test]

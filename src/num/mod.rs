@@ -3,11 +3,14 @@
 //! correctly rounded conversion to f64.
 
 pub mod dd;
+pub mod dyadic;
+pub mod dyadic128;
 pub mod error_bound;
 pub mod expansion;
 pub mod filter;
 pub mod interval;
 pub mod interval_like;
+mod limbs;
 pub mod mpfr_interval;
 pub mod parse;
 pub mod ratio;
