@@ -2,7 +2,7 @@
 //! Sturm, correctly rounded points) against a plain f64 solve of the same quartic
 //! (coefficients in f64, companion-matrix eigenvalues, real parts of the roots with
 //! |imaginary part| ≤ 1e-8). Batches of 64 seeded lines per iteration; ratios in
-//! BENCHMARKS-univariate.md.
+//! BENCHMARKS.md.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use geocert::certify::univariate::{real_roots, Polynomial};

@@ -1,5 +1,5 @@
 //! The cost of certification (src/certify, issue 4), measured in one run against plain
-//! f64 Newton (BENCHMARKS-certify.md has the table and the command):
+//! f64 Newton (BENCHMARKS.md has the table and the command):
 //!
 //! * `regular/<system>/newton_f64`: Newton in f64 from a guess 1e-3 off, to convergence;
 //!   `regular/<system>/certify_f64`: [`certify_root`] of Newton's answer (a Newton check

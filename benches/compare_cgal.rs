@@ -3,7 +3,7 @@
 //! of `geocert::robust`), timed as plain f64 (`_f64`), geocert certified, geocert exact
 //! rationals (`_exact`, inputs already rational), CGAL Epick, CGAL Epeck with
 //! `to_double` (lazy approximation) and CGAL Epeck with `to_double(exact(x))`.
-//! Each iteration runs a batch of 64 cases. BENCHMARKS-diff.md has the ratios.
+//! Each iteration runs a batch of 64 cases. BENCHMARKS.md has the ratios.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use geocert::geom::line_plane::{

@@ -3,7 +3,7 @@
 //! point + 3 derivatives over a thin parameter interval in f64 intervals and in
 //! 128-bit MPFR intervals; a circle in a frame for comparison. Each benchmark
 //! evaluates 256 prepared parameters (Throughput: 256 elements). Results and the
-//! command: BENCHMARKS-curves.md.
+//! command: BENCHMARKS.md.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use geocert::curve::{Analytic, Curve, Frame, NurbsCurve, Shape};

@@ -1,7 +1,7 @@
 //! f64 vs `Interval` vs `MpfrInterval` (128 bits), per operation and for one generic
 //! formula (a torus point and its two partial derivatives), measured in the same run.
 //! Each benchmark evaluates the operation on 256 prepared inputs; criterion reports the
-//! time per batch (Throughput: 256 elements). Results and the command: BENCHMARKS-interval.md.
+//! time per batch (Throughput: 256 elements). Results and the command: BENCHMARKS.md.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use geocert::num::{Interval, MpfrInterval, Real};

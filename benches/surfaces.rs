@@ -6,7 +6,7 @@
 //!   at 200-bit MPFR for reference.
 //!
 //! Each benchmark evaluates 256 prepared inputs per iteration (Throughput: 256).
-//! Results and the command: BENCHMARKS-surfaces.md.
+//! Results and the command: BENCHMARKS.md.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion, Throughput};
 use geocert::num::{Interval, MpfrInterval};
