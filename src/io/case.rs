@@ -44,7 +44,8 @@ pub struct Options {
     pub tolerance: Option<Double>,
     /// The equality tolerance δ of the float path (§12).
     pub equal_tolerance: Option<Double>,
-    /// The precision cap of MPFR escalation, in bits (default 4096).
+    /// The precision cap of MPFR escalation, in bits (default 512; CERTIFICATION.md
+    /// names 4096, reachable by setting it).
     pub max_bits: Option<u32>,
     /// The box budget of subdivision.
     pub max_boxes: Option<u64>,
