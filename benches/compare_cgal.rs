@@ -3,7 +3,9 @@
 //! of `geocert::robust`), timed as plain f64 (`_f64`), geocert certified, geocert exact
 //! rationals (`_exact`, inputs already rational), CGAL Epick, CGAL Epeck with
 //! `to_double` (lazy approximation) and CGAL Epeck with `to_double(exact(x))`.
-//! Each iteration runs a batch of 64 cases. BENCHMARKS.md has the ratios.
+//! Each iteration runs a batch of 64 cases; the tier deciding each case (filter on
+//! generic, integers on degenerate input) is checked before timing. BENCHMARKS.md has
+//! the ratios.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use geocert::geom::line_plane::{
@@ -34,6 +36,23 @@ fn cases(c: Construction, g: Generator) -> Vec<Case> {
 }
 
 type Methods<'a> = Vec<(&'static str, Box<dyn Fn() + 'a>)>;
+
+/// The tier that decides a case on geocert's certified path.
+fn tier(c: &Case) -> geocert::Arithmetic {
+    match c {
+        Case::ThreePlanes(p) => {
+            intersect_three_planes(&p.map(|x| x.object(same).unwrap())).arithmetic
+        }
+        Case::LinePlane(l, p) => {
+            let (l, p) = (l.object(same).unwrap(), p.object(same).unwrap());
+            intersect_line_plane(l.linear(), &p).arithmetic
+        }
+        Case::PlanePlane(a, b) => {
+            intersect_planes(&a.object(same).unwrap(), &b.object(same).unwrap()).arithmetic
+        }
+        _ => unreachable!(),
+    }
+}
 
 fn three_planes(data: &[Case]) -> Methods<'_> {
     let p: Vec<[geocert::robust::case::PlaneIn; 3]> = data
@@ -290,6 +309,15 @@ fn compare(c: &mut Criterion) {
             ("degenerate", Generator::Degenerate),
         ] {
             let data = cases(construction, generator);
+            // The batch is decided where it claims: generic input by the filter, exactly
+            // degenerate input by the integer tier.
+            let expected = match generator {
+                Generator::Generic => geocert::Arithmetic::Filter,
+                _ => geocert::Arithmetic::Integer,
+            };
+            for case in &data {
+                assert_eq!(tier(case), expected, "{name}/{input}");
+            }
             let mut g = c.benchmark_group(format!("{name}/{input}"));
             for (method, run) in methods(&data) {
                 g.bench_function(method, |b| b.iter(&run));

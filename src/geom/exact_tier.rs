@@ -1,16 +1,16 @@
 //! The exact tiers after the filter: the exact decision procedure of an operation run
 //! on the exact values of the double inputs in an exact ring — fixed-width dyadic
 //! integers ([`SmallInteger`], then [`WideInteger`]; `Arithmetic::Integer`), then
-//! floating-point expansions
-//! (`Arithmetic::Expansion`), each as unreduced quotients ([`Ratio`]), each giving up
-//! (poison) when its range or width is exceeded — and last in `rug::Rational`, which
-//! always answers. Results are correctly rounded ([`crate::num::round`]).
+//! floating-point expansions (`Arithmetic::Expansion`), each as unreduced quotients
+//! ([`Ratio`]), each giving up (poison) when its range or width is exceeded — and last
+//! in `rug::Rational`, which always answers. Results are correctly rounded
+//! ([`crate::num::round`]).
 //! `Certified::bits` reports the bit length of the largest numerator or denominator
 //! rounded (for expansions, 53 × the largest number of components).
 
-use rug::Rational;
-
 use std::marker::PhantomData;
+
+use rug::Rational;
 
 use crate::certificate::{Arithmetic, Certified};
 use crate::num::dyadic::{round_quotient as round_dyadic_quotient, Dyadic};

@@ -7,7 +7,9 @@
 //! on rational inputs (exact rationals). One decision procedure (`core`), generic over
 //! [`crate::num::ring::Field`], serves the plain and the exact paths; the certified path
 //! runs the same formulas in double-double with a static error bound first
-//! ([`crate::num::filter`]) and falls back to the rational `core`.
+//! ([`crate::num::filter`]; no allocation) and falls back to the same `core` in exact
+//! rings of rising cost: 128-bit and 768-bit dyadic integers ([`crate::num::dyadic128`],
+//! [`crate::num::dyadic`]; no allocation), floating-point expansions, rationals.
 
 pub mod data;
 mod exact_tier;

@@ -127,7 +127,9 @@ pub(crate) fn reference<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> V3<R> {
 }
 
 /// Parameters on parametric plane `q` of the line of `q ∩ other`, with `n = N_q × N_o`
-/// when `sign = 1` (plane `a`), `n = N_o × N_q` (plane `b`, `sign = −1`).
+/// when `on_a` (`q` is plane `a`), `n = N_o × N_q` otherwise. `other_at_origin` is
+/// `f_other(x_r)` when `x_r = o_q`; when it is `None`, `other` is parametric with origin
+/// `x_r` (the only other case `terms_from` produces).
 #[inline(always)]
 fn param_terms<R: Ring>(
     q: &PlaneData<R>,
@@ -150,8 +152,11 @@ fn param_terms<R: Ring>(
             (e.times(&n_v), e.times(&n_u).negate())
         }
         None => {
-            let e = other.value_at(o).negate();
-            let g = dot3(n, &sub3(x_r, o));
+            // Then `other`'s origin is x_r (see `terms_from`), so
+            // −f_other(o) = N_o·(x_r − o): one difference serves e and g.
+            let w = sub3(x_r, o);
+            let e = dot3(no, &w);
+            let g = dot3(n, &w);
             (
                 e.times(&n_v).minus(&nv.times(&g)),
                 nu.times(&g).minus(&e.times(&n_u)),
@@ -174,13 +179,14 @@ fn param_terms<R: Ring>(
 #[cfg(test)] // the filter-constant tests; the kernel calls `terms_from` with its `n`
 #[inline(always)]
 pub(crate) fn terms<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> Terms<R> {
-    terms_from(a, b, cross3(a.n(), b.n()))
+    let n = cross3(a.n(), b.n());
+    let nn = dot3(&n, &n);
+    terms_from(a, b, n, nn)
 }
 
-/// The line's numerators given its direction `n = N_a × N_b`.
+/// The line's numerators given its direction `n = N_a × N_b` and `|n|²`.
 #[inline(always)]
-pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>) -> Terms<R> {
-    let nn = dot3(&n, &n);
+pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>, nn: R) -> Terms<R> {
     let x_r = reference(a, b);
     // The plane whose origin is x_r vanishes there: its term of the point is left out,
     // and its parameters reuse the other plane's value at x_r.
@@ -221,7 +227,8 @@ pub(crate) fn core<R: Field>(a: &PlaneData<R>, b: &PlaneData<R>) -> PlanePlane<R
             PlanePlane::Parallel
         };
     }
-    PlanePlane::Line(finish(terms_from(a, b, n)))
+    let nn = dot3(&n, &n);
+    PlanePlane::Line(finish(terms_from(a, b, n, nn)))
 }
 
 /// Whether two planes with parallel normals (`N_a × N_b = 0`) are the same plane: they
@@ -394,8 +401,9 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
     // The decision first: preparing |n|² proves n ≠ 0.
     let n = cross3(pa.n(), pb.n());
     let e_nn = bound(EPS_NN, &[ka, ka, kb, kb]);
-    let nn = Denominator::new(&dot3(&n, &n), e_nn)?;
-    let tm = terms_from(&pa, &pb, n);
+    let nn2 = dot3(&n, &n);
+    let nn = Denominator::new(&nn2, e_nn)?;
+    let tm = terms_from(&pa, &pb, n, nn2);
     let e_n = bound(EPS_N, &[ka, kb]);
     let dir = [
         round_value(&tm.n[0], e_n),

@@ -183,7 +183,8 @@ pub(crate) fn core<R: Field>(p: &[PlaneData<R>; 3]) -> ThreePlanes<R> {
             };
             // The line lies in plane k iff its point p = pnum/|n|² does: tested on the
             // numerators (|n|²·f_k(p), a polynomial), before any division.
-            let tm = terms_from_pair(&p[i], &p[j], n);
+            let nn = dot3(&n, &n);
+            let tm = terms_from_pair(&p[i], &p[j], n, nn);
             return if p[k].value_at_homogeneous(&tm.pnum, &tm.nn).is_zero() {
                 ThreePlanes::Line {
                     line: finish(tm),

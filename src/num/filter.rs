@@ -91,9 +91,9 @@ pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
     }
 }
 
-/// A denominator prepared once for several [`round_over`] calls: normalised, with a
-/// proven lower bound on its exact magnitude, its reciprocal (for candidates only) and
-/// the two factors of [`round_over`]'s error bound that depend on it alone.
+/// A denominator prepared once for several [`round_over`] calls: its sign decided, its
+/// reciprocal (for candidates only) and the two factors of [`round_over`]'s error bound
+/// that depend on it alone.
 #[derive(Debug, Clone, Copy)]
 pub struct Denominator<M: ProductMode> {
     q: Dd<M>,
@@ -103,7 +103,7 @@ pub struct Denominator<M: ProductMode> {
     ql: f64,
     /// An upper bound on `1/|Q|`.
     inv_lo: f64,
-    /// An upper bound on `|1/Q − inv|/|inv|·|inv|`, see [`round_over`].
+    /// An upper bound on `|1/Q − inv|`.
     k: f64,
 }
 
@@ -196,9 +196,11 @@ fn inexact(c: f64, above: bool) -> Rounded {
 ///
 /// Method (one candidate, one residual, no second product): `c₀ = p.h·inv`; the
 /// residual `R = P − c₀Q` is approximated by `r = r₁ + r₂` with `r₁ = p.h − c₀·q.h`
-/// (FMA: one rounding; without FMA: Dekker's exact product, `p.h − m` exact by
-/// Sterbenz since `c₀q.h` is within `4u` of `p.h`, one rounding) and
-/// `r₂ = p.l − c₀·q.l` (at most two roundings). Then
+/// (FMA: one rounding; without FMA: `(m, e)` Dekker's exact product, `p.h − m` exact
+/// by Sterbenz's lemma since `c₀ = fl(p.h·fl(1/q.h))` makes `m = fl(c₀q.h)` lie within
+/// a factor `1 ± 4u` of `p.h`, then one rounding; should `c₀q.h` underflow, `e` loses at
+/// most `η`, covered below) and `r₂ = p.l − c₀·q.l` (FMA: one rounding; without: the
+/// product's, at most `u|c₀q.l|`, and the sum's). Then
 ///
 /// `|R − r| ≤ E = ep + |c₀|·eq + u(|r₁| + |c₀||q.l| + |r₂| + |r|)`
 ///
