@@ -97,7 +97,11 @@ fn ellipse_foot_mpfr(t: &rug::Float) -> rug::Float {
 fn ellipse_root(a: f64, b: f64) -> rug::Float {
     let (mut lo, mut hi) = (rug::Float::with_val(300, a), rug::Float::with_val(300, b));
     let sign_lo = ellipse_foot_mpfr(&lo).is_sign_negative();
-    assert_ne!(sign_lo, ellipse_foot_mpfr(&hi).is_sign_negative(), "no bracket");
+    assert_ne!(
+        sign_lo,
+        ellipse_foot_mpfr(&hi).is_sign_negative(),
+        "no bracket"
+    );
     for _ in 0..250 {
         let mid = (lo.clone() + &hi) / 2u32;
         if ellipse_foot_mpfr(&mid).is_sign_negative() == sign_lo {
@@ -114,18 +118,30 @@ fn certified_feet_of_16_3_contain_the_true_roots_and_are_complete() {
     use geocert::ops::project::project_point_on_curve;
     use geocert::Status;
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let r = project_point_on_curve(&e, &[0.5, 0.2], &samples(&e, 20), &Precision::default(), &Default::default())
-        .expect("valid");
+    let r = project_point_on_curve(
+        &e,
+        &[0.5, 0.2],
+        &samples(&e, 20),
+        &Precision::default(),
+        &Default::default(),
+    )
+    .expect("valid");
     assert!(r.complete, "{:?}", r.reason);
     assert_eq!(r.status, Status::Verified);
     assert_eq!(r.value.len(), 4);
-    for (f, t) in r.value.iter().zip([1.2901854022, 3.2031430402, 5.0463134705, 6.1683213550]) {
+    for (f, t) in r
+        .value
+        .iter()
+        .zip([1.2901854022, 3.2031430402, 5.0463134705, 6.1683213550])
+    {
         let truth = ellipse_root(t - 1e-8, t + 1e-8);
         let b = &f.root.enclosure[0];
         assert!(b.lo() <= truth && truth <= b.hi(), "{b:?} misses {truth}");
         assert_eq!(f.root.status, Status::Verified);
         assert_eq!(f.root.max_roots, 1);
         // The point box contains the point at the estimate.
-        assert!((0..2).all(|i| f.point_box[i].lo() <= f.point[i] && f.point[i] <= f.point_box[i].hi()));
+        assert!(
+            (0..2).all(|i| f.point_box[i].lo() <= f.point[i] && f.point[i] <= f.point_box[i].hi())
+        );
     }
 }
