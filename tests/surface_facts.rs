@@ -7,11 +7,11 @@
 
 mod surface_support;
 
+use geocert::num::vector::{cross, norm_sq};
 use geocert::num::{IntervalLike, MpfrInterval, Real};
 use geocert::surface::nurbs::NurbsSurface;
 use geocert::surface::quadrics::{Cone, Cylinder, Sphere};
 use geocert::surface::torus::Torus;
-use geocert::surface::vector::{cross, norm_sq};
 use geocert::surface::{Implicit, Surface};
 use surface_support::{any_surfaces, bezier_rational, random_params, Rng};
 

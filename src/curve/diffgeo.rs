@@ -5,8 +5,8 @@
 //! the exact quantity over the parameter interval (an unbounded or empty interval
 //! where a denominator can vanish: special points `c' = 0`, inflections `c'×c'' = 0`).
 
-use super::vector::{cross, cross2, cross_norm_sq, dot, norm_sq, scale};
 use super::Curve;
+use crate::num::vector::{cross, cross2, cross_norm_sq, dot, norm_sq, scale};
 use crate::num::Real;
 
 /// `k = |c'×c''| / |c'|³` (1.3); in 2D `|x'y'' − y'x''| / |c'|³`.

@@ -5,8 +5,8 @@
 //! §1.5 "closed curves wrap the parameter"). The split pieces are joined by hulls, so
 //! the result encloses the values over the whole parameter interval.
 
-use super::vector::hull_jets;
 use crate::error::{require_finite, GeomError};
+use crate::num::vector::hull_jets;
 use crate::num::Real;
 
 /// A parameter interval `[lo, hi]` with finite `lo < hi`.

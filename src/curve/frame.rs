@@ -11,9 +11,9 @@
 //! `Z = a/|a|`, `X = w/|w|`, `Y = (a × w)/(|a||w|)`,
 //! so an interval evaluation encloses the exact orthonormal frame of the double inputs.
 
-use super::vector::{add_scaled, cross, dot, lift, norm_sq, scale};
 use crate::error::{require_finite_all, GeomError};
 use crate::geom::objects::Coord;
+use crate::num::vector::{add_scaled, cross, dot, lift, norm_sq, scale};
 use crate::num::Real;
 use nalgebra::Vector3;
 

@@ -3,9 +3,9 @@
 //! parameter gives the exact range of values up to outward rounding.
 
 use super::domain::Domain;
-use super::vector::{add_scaled, lift, sub, zero};
 use super::{Curve, StepHint};
 use crate::error::{require_finite_all, GeomError};
+use crate::num::vector::{add_scaled, lift, sub, zero};
 use crate::num::Real;
 
 /// A line `c(t) = origin + t·dir` (§1.5, [Y 2.2.1]); `t ∈ ℝ` unless a range is given.

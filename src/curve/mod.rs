@@ -30,7 +30,6 @@ pub mod lines;
 pub mod nurbs;
 pub mod polyline;
 mod rational;
-pub mod vector;
 
 pub use analytic::{circular_arc, elliptic_arc, Analytic, Analytic2, Shape};
 pub use any::{AnyCurve2, AnyCurve3};

@@ -4,9 +4,9 @@
 //! the derivative enclosure covers the one-sided derivatives of every segment touched.
 
 use super::domain::piecewise_jet;
-use super::vector::{add_scaled, lift, scale, sub, zero};
 use super::{Curve, StepHint};
 use crate::error::{require_finite_all, GeomError};
+use crate::num::vector::{add_scaled, lift, scale, sub, zero};
 use crate::num::Real;
 
 /// A polyline through `points` at parameters `params`.

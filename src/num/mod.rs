@@ -17,6 +17,7 @@ pub mod ratio;
 pub mod real;
 pub mod ring;
 pub mod round;
+pub mod vector;
 
 pub use interval::Interval;
 pub use interval_like::IntervalLike;

@@ -9,7 +9,6 @@ pub mod float;
 pub mod intersect;
 pub mod polyhedron;
 pub mod project;
-pub mod vector;
 
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use polyhedron::Polyhedron;

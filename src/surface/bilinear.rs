@@ -4,9 +4,9 @@
 //! Differences of corners are formed in the number type (exact inputs lifted first), so
 //! an interval evaluation encloses the exact jet.
 
-use super::vector::{add, lift, scale, sub, zero};
 use super::{StepRule, Surface};
 use crate::error::{require_finite_all, GeomError};
+use crate::num::vector::{add, lift, scale, sub, zero};
 use crate::num::Real;
 
 /// A bilinear patch through four corners.
@@ -40,13 +40,13 @@ impl Surface for Bilinear {
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let [p1, p2, p3, p4] = self.corners.map(|p| lift(u, &p));
         let (d12, d34) = (sub(&p2, &p1), sub(&p4, &p3));
-        let bottom = add(&p1, &scale(&d12, u));
-        let top = add(&p3, &scale(&d34, u));
+        let bottom = add(&p1, &scale(u, &d12));
+        let top = add(&p3, &scale(u, &d34));
         let up = sub(&top, &bottom);
-        let mut jet = vec![add(&bottom, &scale(&up, v))];
+        let mut jet = vec![add(&bottom, &scale(v, &up))];
         if order >= 1 {
             let one_v = u.one_like() - v;
-            jet.push(add(&scale(&d12, &one_v), &scale(&d34, v)));
+            jet.push(add(&scale(&one_v, &d12), &scale(v, &d34)));
             jet.push(up);
         }
         if order >= 2 {

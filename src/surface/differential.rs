@@ -6,7 +6,7 @@
 //! the exact quantity over the box wherever it is defined (a quotient by an interval that
 //! contains 0 is unbounded, never wrong).
 
-use super::vector::{add_scaled, cross, dot, neg, norm_sq, normalize, scale};
+use crate::num::vector::{add_scaled, cross, dot, neg, norm_sq, normalize, scale};
 use crate::num::Real;
 
 /// `true` if every component is exactly zero (f64 `0.0`, or the point interval `[0, 0]`).
@@ -134,7 +134,7 @@ impl<T: Real> FundamentalForms<T> {
         let combine = |b1: &T, b2: &T| {
             let cu = b1.clone() * &g11i + b2.clone() * &g12i;
             let cv = b1.clone() * &g12i + b2.clone() * &g22i;
-            neg(&add_scaled(&scale(&self.s_u, &cu), &cv, &self.s_v))
+            neg(&add_scaled(&scale(&cu, &self.s_u), &cv, &self.s_v))
         };
         (combine(&self.b11, &self.b12), combine(&self.b12, &self.b22))
     }

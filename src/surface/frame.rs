@@ -15,8 +15,8 @@ use std::any::TypeId;
 
 use rug::Rational;
 
-use super::vector::{add, cross, dot, lift, normalize, scale, sub};
 use crate::error::{require_finite_all, GeomError};
+use crate::num::vector::{add, cross, dot, lift, normalize, scale, sub};
 use crate::num::Real;
 
 /// An origin and an axis (with an optional reference direction), validated.
@@ -119,7 +119,7 @@ impl Frame {
                 lift(like, &e)
             }
         };
-        let x = normalize(&sub(&e, &scale(&z, &dot(&e, &z))));
+        let x = normalize(&sub(&e, &scale(&dot(&e, &z), &z)));
         let y = cross(&z, &x);
         [x, y, z]
     }

@@ -12,9 +12,9 @@ use super::frame::Frame;
 use super::plane::{ParaboloidRect, Plane};
 use super::quadrics::{Cone, Cylinder, Ellipsoid, Hyperboloid, Paraboloid, Sheets, Sphere};
 use super::torus::Torus;
-use super::vector::{cross, dot, lift, sub};
 use super::{Implicit, ImplicitJet};
 use crate::error::{require_finite, GeomError};
+use crate::num::vector::{cross, dot, lift, sub};
 use crate::num::Real;
 
 /// Value, gradient and Hessian of a function of three variables.

@@ -23,7 +23,6 @@ mod taylor;
 mod tensor;
 pub mod torus;
 pub mod validate;
-pub mod vector;
 
 pub use any::{AnyImplicit, AnySurface};
 pub use differential::FundamentalForms;

@@ -7,10 +7,10 @@
 //! interval ([`Curve::jet`]), and everything else is an enclosing operation.
 
 use super::validate::{interval, FULL_TURN};
-use super::vector::{add, add_scaled, cross, dot, lift, normalize, scale, sub, zero};
 use super::{StepRule, Surface};
 use crate::curve::Curve;
 use crate::error::{require_finite_all, GeomError};
+use crate::num::vector::{add, add_scaled, cross, dot, lift, normalize, scale, sub, zero};
 use crate::num::Real;
 
 /// Extrusion (1.13): `s(u, v) = c(u) + v·d`, `u` in the profile's domain, `v ∈ [0, 1]`.
@@ -124,20 +124,20 @@ impl<C: Curve<3>> Surface for Revolution<C> {
         let (cu, su) = (u.cos(), u.sin());
         // The rotation by u applied to a vector w, split as w∥ + w⊥.
         let split = |w: &[T; 3]| {
-            let par = scale(&e, &dot(&e, w));
+            let par = scale(&dot(&e, w), &e);
             let perp = sub(w, &par);
             (par, perp, cross(&e, w))
         };
         let rotate = |w: &[T; 3]| {
             let (par, perp, ew) = split(w);
-            add(&par, &add(&scale(&perp, &cu), &scale(&ew, &su)))
+            add(&par, &add(&scale(&cu, &perp), &scale(&su, &ew)))
         };
         // d/du of the rotated vector: −sin u·w⊥ + cos u·(e × w); d²/du²: −(rotated w⊥).
         let turn = |w: &[T; 3], k: usize| {
             let (_, perp, ew) = split(w);
             match k {
-                1 => sub(&scale(&ew, &cu), &scale(&perp, &su)),
-                _ => neg_sum(&scale(&perp, &cu), &scale(&ew, &su)),
+                1 => sub(&scale(&cu, &ew), &scale(&su, &perp)),
+                _ => neg_sum(&scale(&cu, &perp), &scale(&su, &ew)),
             }
         };
         let w = sub(&c[0], &q);
@@ -169,10 +169,10 @@ fn guide_jet<C: Curve<3>, T: Real>(c: &C, u: &T, order: usize) -> Vec<[T; 3]> {
     let t = u.lift(a) + len.clone() * u;
     let mut jet = c.jet(&t, order.min(2));
     if order >= 1 {
-        jet[1] = scale(&jet[1], &len);
+        jet[1] = scale(&len, &jet[1]);
     }
     if order >= 2 {
-        jet[2] = scale(&jet[2], &len.sqr());
+        jet[2] = scale(&len.sqr(), &jet[2]);
     }
     jet
 }
@@ -215,7 +215,7 @@ impl<A: Curve<3>, B: Curve<3>> Surface for Ruled<A, B> {
 /// surfaces: its derivatives are zero).
 fn ruled_jet<T: Real>(a: &[[T; 3]], b: &[[T; 3]], v: &T, order: usize) -> Vec<[T; 3]> {
     let w = v.one_like() - v;
-    let mix = |k: usize| add(&scale(&a[k], &w), &scale(&b[k], v));
+    let mix = |k: usize| add(&scale(&w, &a[k]), &scale(v, &b[k]));
     let mut jet = vec![mix(0)];
     if order >= 1 {
         jet.push(mix(1));

@@ -4,9 +4,9 @@
 
 use super::frame::{exactly_parallel, Frame};
 use super::validate::{interval, positive, restrict_domain, Domain};
-use super::vector::{add, lift, scale, zero};
 use super::{StepRule, Surface};
 use crate::error::{require_finite_all, GeomError};
+use crate::num::vector::{add, lift, scale, zero};
 use crate::num::Real;
 
 const ALL: [f64; 2] = [f64::NEG_INFINITY, f64::INFINITY];
@@ -63,7 +63,7 @@ impl Surface for Plane {
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let (a, b) = (lift(u, &self.a), lift(u, &self.b));
-        let p = add(&lift(u, &self.origin), &add(&scale(&a, u), &scale(&b, v)));
+        let p = add(&lift(u, &self.origin), &add(&scale(u, &a), &scale(v, &b)));
         let mut jet = vec![p];
         if order >= 1 {
             jet.push(a);

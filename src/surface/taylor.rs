@@ -22,7 +22,7 @@
 use super::basis::BasisJet;
 use super::sets::meet;
 use super::tensor::{quotient, Net, ORDERS};
-use super::vector::lift;
+use crate::num::vector::lift;
 use crate::num::Real;
 
 /// `true` for a point parameter (f64, or a point interval): evaluated directly.

@@ -15,7 +15,7 @@
 //! encloses: every step is an enclosing operation on exact (lifted) data.
 
 use super::basis::BasisJet;
-use super::vector::lift;
+use crate::num::vector::lift;
 use crate::num::Real;
 
 /// A control net: `rows × cols` points stored row by row, optional weights.

@@ -5,10 +5,10 @@
 //! angle is proven: [`proven_curve_step`], [`ProvenCurveWalk`].
 
 use super::{turning_angle_step, StepClamps};
-use crate::curve::vector::{cross_norm_sq, norm_sq};
 use crate::curve::{Curve, StepHint};
 use crate::error::{require_finite, GeomError};
 use crate::num::interval::directed::next_up;
+use crate::num::vector::{cross_norm_sq, norm_sq};
 use crate::num::IntervalLike;
 use std::f64::consts::PI;
 

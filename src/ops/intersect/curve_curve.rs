@@ -9,10 +9,10 @@
 
 use crate::certify::System;
 use crate::curve::Curve;
+use crate::num::vector::{dot, norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, newton_with, Coordinate, NewtonOutcome, Precision};
-use crate::ops::vector::{dot, norm_f64, sub};
 
 /// One intersection point of two curves.
 #[derive(Debug, Clone, PartialEq)]

@@ -8,10 +8,10 @@
 
 use crate::certify::System;
 use crate::curve::Curve;
+use crate::num::vector::{cross, dot, norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, newton_with, Coordinate, NewtonOutcome, Precision};
-use crate::ops::vector::{cross, dot, norm_f64, sub};
 use crate::surface::Surface;
 
 /// One intersection point of a curve and a surface.

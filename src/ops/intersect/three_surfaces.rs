@@ -11,10 +11,10 @@
 //! and merged (§0.4).
 
 use crate::certify::System;
+use crate::num::vector::{cross, dot, norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, Coordinate, NewtonOutcome, Precision};
-use crate::ops::vector::{cross, dot, norm_f64, sub};
 use crate::surface::Surface;
 use std::collections::HashMap;
 

@@ -6,10 +6,10 @@
 
 use crate::certify::System;
 use crate::curve::Curve;
+use crate::num::vector::{dot, lift, norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, Coordinate, NewtonOutcome, Precision};
-use crate::ops::vector::{dot, lift, norm_f64, sub};
 
 /// One foot of a perpendicular from `p` to the curve.
 #[derive(Debug, Clone, PartialEq)]

@@ -3,10 +3,10 @@
 //! travel; the nearest is the one with the smallest `|t|`.
 
 use crate::curve::Curve;
+use crate::num::vector::{norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::Precision;
 use crate::ops::intersect::{intersect_curve_surface_f64, CurveSurfacePoint};
-use crate::ops::vector::{norm_f64, sub};
 use crate::surface::Surface;
 
 /// The line `origin + t·dir` on `t ∈ [lo, hi]`, as a curve (§1.5 line).

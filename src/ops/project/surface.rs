@@ -10,10 +10,10 @@
 use super::curve::{changes_sign, project_point_on_curve_f64, CurveFeet};
 use crate::certify::System;
 use crate::curve::Curve;
+use crate::num::vector::{dot, lift, norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, Coordinate, NewtonOutcome, Precision};
-use crate::ops::vector::{dot, lift, norm_f64, sub};
 use crate::surface::Surface;
 
 /// One foot of a perpendicular from `p` to a surface.

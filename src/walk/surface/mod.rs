@@ -18,8 +18,8 @@ mod proven;
 pub use proven::{proven_surface_steps, turning_bounds, ProvenSteps, MAX_HALVINGS};
 
 use crate::error::GeomError;
+use crate::num::vector::{cross, norm_f64};
 use crate::num::Interval;
-use crate::surface::vector::{cross, norm_f64};
 use crate::surface::{FundamentalForms, StepRule, Surface};
 
 /// Parameters of the walk (§2.1–§2.2, §12).

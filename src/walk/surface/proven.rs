@@ -12,8 +12,8 @@
 //! over sub-boxes that cover `W`, so the bounds are proven; where `N` may vanish in `W`
 //! they are infinite.
 
+use crate::num::vector::{add, cross, norm_sq};
 use crate::num::IntervalLike;
-use crate::surface::vector::{add, cross, norm_sq};
 use crate::surface::Surface;
 
 /// At most `2⁴ = 16`-fold smaller steps than the float walk's.

@@ -1,5 +1,5 @@
-//! Small vector helpers over `[T; D]` for any [`Real`] `T`, so that the curve
-//! formulas read like the equations they implement. For interval `T` each helper is
+//! Small vector helpers over `[T; D]` for any [`Real`] `T`, so that curve, surface and
+//! operation formulas read like the equations they implement. For interval `T` each helper is
 //! a composition of enclosing operations and therefore encloses the exact result.
 
 use crate::num::Real;
@@ -89,4 +89,20 @@ pub fn hull<T: Real, const D: usize>(a: &[T; D], b: &[T; D]) -> [T; D] {
 /// Componentwise hull of two jets of the same length.
 pub fn hull_jets<T: Real, const D: usize>(a: &[[T; D]], b: &[[T; D]]) -> Vec<[T; D]> {
     a.iter().zip(b).map(|(x, y)| hull(x, y)).collect()
+}
+
+/// `−a`.
+pub fn neg<T: Real, const D: usize>(a: &[T; D]) -> [T; D] {
+    std::array::from_fn(|i| -a[i].clone())
+}
+
+/// `a/|a|` (an interval enclosure is unbounded if `a` may vanish).
+pub fn normalize<T: Real, const D: usize>(a: &[T; D]) -> [T; D] {
+    let n = norm_sq(a).sqrt();
+    std::array::from_fn(|i| a[i].clone() / &n)
+}
+
+/// The Euclidean length of an f64 vector (no proof; float path only).
+pub fn norm_f64<const D: usize>(a: &[f64; D]) -> f64 {
+    a.iter().map(|x| x * x).sum::<f64>().sqrt()
 }
