@@ -66,7 +66,8 @@ fn line_and_sphere_of_16_4_crossing_and_tangent() {
         r#"{"id":"t","op":"intersect","objects":[{"type":"line","origin":[-3,2,0],"dir":[1,0,0]},{"type":"sphere","center":[0,0,0],"radius":2}]}"#,
         r#"{"id":"m","op":"intersect","objects":[{"type":"sphere","center":[0,0,0],"radius":2},{"type":"line","origin":[-3,2.000001,0],"dir":[1,0,0]}]}"#,
     ]);
-    assert_eq!(r[0]["status"], "verified", "{}", r[0]);
+    // A line against a sphere is algebraic: decided exactly (CERTIFICATION.md `exact`).
+    assert_eq!(r[0]["status"], "exact", "{}", r[0]);
     assert_eq!(r[0]["complete"], true);
     let pts = r[0]["points"].as_array().expect("points");
     assert_eq!(pts.len(), 2);
@@ -78,12 +79,17 @@ fn line_and_sphere_of_16_4_crossing_and_tangent() {
     // (u, v) on the sphere, the second object.
     assert!((f(&pts[0]["params"][1][0]) - 2.8876114213).abs() < 1e-9);
     assert!((f(&pts[0]["params"][1][1]) - 0.1001674212).abs() < 1e-9);
-    assert_eq!(r[1]["status"], "verified_singular", "{}", r[1]);
+    assert_eq!(r[1]["status"], "exact", "{}", r[1]);
     let p = &r[1]["points"][0];
     assert_eq!(p["tangent"], true);
     assert_eq!(p["multiplicity"], 2);
-    let b = &p["box"][0];
-    assert!(f(&b[0]) <= 0.0 && 0.0 <= f(&b[1]), "{p}");
+    assert_eq!(p["exact"]["xyz"], serde_json::json!(["0", "2", "0"]), "{p}");
+    assert_eq!(p["exact"]["params"][0], serde_json::json!(["3"]));
+    // (u, v) = (π/2, 0) enclosed.
+    let u = &p["param_box"][1][0];
+    assert!(
+        f(&u[0]) <= std::f64::consts::FRAC_PI_2 && std::f64::consts::FRAC_PI_2 <= f(&u[1]) + 1e-15
+    );
     assert_eq!(r[2]["kind"], "empty", "{}", r[2]);
     assert_eq!(r[2]["complete"], true);
 }
@@ -94,7 +100,7 @@ fn circle_and_ellipse_of_16_6() {
         r#"{"id":"4","op":"intersect","objects":[{"type":"circle2","center":[0,0],"radius":2},{"type":"ellipse2","center":[0,0],"a":3,"b":1}]}"#,
         r#"{"id":"2","op":"intersect","objects":[{"type":"circle2","center":[0,0],"radius":1},{"type":"ellipse2","center":[0,0],"a":3,"b":1}]}"#,
     ]);
-    assert_eq!(r[0]["status"], "verified", "{}", r[0]);
+    assert_eq!(r[0]["status"], "exact", "{}", r[0]);
     assert_eq!(r[0]["points"].as_array().expect("points").len(), 4);
     for p in r[0]["points"].as_array().expect("points") {
         assert!((f(&p["xyz"][0]).abs() - 1.8371173071).abs() < 1e-9);
@@ -102,7 +108,10 @@ fn circle_and_ellipse_of_16_6() {
     }
     let tangent = r[1]["points"].as_array().expect("points");
     assert_eq!(tangent.len(), 2, "{}", r[1]);
-    assert!(tangent.iter().all(|p| p["tangent"] == true));
+    assert!(tangent
+        .iter()
+        .all(|p| p["tangent"] == true && p["multiplicity"] == 2));
+    assert_eq!(r[1]["status"], "exact");
 }
 
 #[test]
@@ -166,4 +175,179 @@ fn curved_bad_input_names_the_field() {
         "{}",
         r[3]
     );
+}
+
+#[test]
+fn nearest_is_proven_against_feet_ends_and_edges() {
+    let r = solve(&[
+        // An open Bézier arc whose distance still falls at its end: the end is nearest.
+        r#"{"id":"end","op":"project","nearest":true,"point":[3,-1],"onto":{"type":"bezier2","points":[[0,0],[1,1],[2,0]]}}"#,
+        // A cylinder piece, interior foot (3,0,1.9) → (1,0,1.9) at distance 2; its top
+        // edge is at distance ≥ √4.01.
+        r#"{"id":"foot","op":"project","nearest":true,"point":[3,0,1.9],"onto":{"type":"cylinder","origin":[0,0,0],"radius":1,"axis":[0,0,1],"height":[0,2]}}"#,
+        // Above the top edge: no interior foot; the nearest point is on the edge.
+        r#"{"id":"edge","op":"project","nearest":true,"point":[3,0,2.5],"onto":{"type":"cylinder","origin":[0,0,0],"radius":1,"axis":[0,0,1],"height":[0,2]}}"#,
+        // A torus has no edges: the nearest of its four feet.
+        r#"{"id":"torus","op":"project","nearest":true,"point":[1,2,3],"onto":{"type":"torus","center":[0,0,0],"major":3,"minor":1,"axis":[0,0,1]}}"#,
+    ]);
+    let end = &r[0];
+    assert_eq!(end["status"], "verified", "{end}");
+    assert_eq!(end["complete"], true);
+    let p = &end["points"][0];
+    assert_eq!(p["nearest"], true);
+    assert_eq!(f(&p["params"][0][0]), 1.0, "{p}");
+    assert_eq!((f(&p["xyz"][0]), f(&p["xyz"][1])), (2.0, 0.0));
+    assert!((f(&p["distance"]) - 2f64.sqrt()).abs() < 1e-15);
+
+    let foot = &r[1];
+    assert_eq!(foot["status"], "verified", "{foot}");
+    assert_eq!(foot["points"].as_array().expect("points").len(), 1);
+    let p = &foot["points"][0];
+    assert!((f(&p["distance"]) - 2.0).abs() < 1e-12, "{p}");
+    assert!((f(&p["xyz"][0]) - 1.0).abs() < 1e-12 && (f(&p["xyz"][2]) - 1.9).abs() < 1e-12);
+
+    assert_eq!(r[2]["status"], "undecided", "{}", r[2]);
+
+    let torus = &r[3];
+    assert_eq!(torus["status"], "verified", "{torus}");
+    assert_eq!(torus["points"].as_array().expect("points").len(), 1);
+    let d = f(&torus["points"][0]["distance"]);
+    let near = ((5f64.sqrt() - 3.0).powi(2) + 9.0).sqrt() - 1.0;
+    assert!((d - near).abs() < 1e-12, "{torus}");
+}
+
+#[test]
+fn projection_along_a_direction_finds_both_hits_and_the_nearer() {
+    let r = solve(&[
+        r#"{"id":"all","op":"project","point":[0.3,0.2,3],"direction":[0,0,-1],"onto":{"type":"sphere","center":[0,0,0],"radius":1}}"#,
+        r#"{"id":"near","op":"project","nearest":true,"point":[0.3,0.2,3],"direction":[0,0,-1],"onto":{"type":"sphere","center":[0,0,0],"radius":1}}"#,
+    ]);
+    let z = (1.0f64 - 0.13).sqrt();
+    assert_eq!(r[0]["status"], "verified", "{}", r[0]);
+    assert_eq!(r[0]["complete"], true);
+    let mut zs: Vec<f64> = r[0]["points"]
+        .as_array()
+        .expect("points")
+        .iter()
+        .map(|p| f(&p["xyz"][2]))
+        .collect();
+    zs.sort_by(f64::total_cmp);
+    assert_eq!(zs.len(), 2);
+    assert!(
+        (zs[0] + z).abs() < 1e-12 && (zs[1] - z).abs() < 1e-12,
+        "{zs:?}"
+    );
+    assert_eq!(r[1]["status"], "verified", "{}", r[1]);
+    let pts = r[1]["points"].as_array().expect("points");
+    assert_eq!(pts.len(), 1);
+    assert!((f(&pts[0]["xyz"][2]) - z).abs() < 1e-12);
+}
+
+#[test]
+fn lines_through_a_torus_hit_0_2_3_and_4_times_exactly() {
+    let torus = r#"{"type":"torus","center":[0,0,0],"major":3,"minor":1,"axis":[0,0,1]}"#;
+    let line = |o: &str| format!(r#"{{"type":"line","origin":{o},"dir":[1,0,0]}}"#);
+    let cases: Vec<String> = ["[-5,0,2]", "[-5,0,1]", "[-5,2,0]", "[-5,0,0]"]
+        .iter()
+        .map(|o| {
+            format!(
+                r#"{{"id":"t","op":"intersect","objects":[{},{torus}]}}"#,
+                line(o)
+            )
+        })
+        .collect();
+    let r = solve(&cases.iter().map(String::as_str).collect::<Vec<_>>());
+    let mults = |r: &serde_json::Value| -> Vec<u64> {
+        r["points"]
+            .as_array()
+            .expect("points")
+            .iter()
+            .map(|p| p["multiplicity"].as_u64().expect("multiplicity"))
+            .collect()
+    };
+    for x in &r {
+        assert_eq!(x["status"], "exact", "{x}");
+        assert_eq!(x["complete"], true);
+    }
+    assert_eq!(r[0]["kind"], "empty");
+    // Over the tube's top circle: two tangencies at (±3, 0, 1).
+    assert_eq!(mults(&r[1]), vec![2, 2]);
+    // Tangent to the inner equator at (0, 2, 0), crossing at x = ±√12.
+    assert_eq!(mults(&r[2]), vec![1, 2, 1]);
+    let x0 = f(&r[2]["points"][0]["xyz"][0]);
+    assert_eq!(x0, -(12f64.sqrt()), "{}", r[2]);
+    assert_eq!(mults(&r[3]), vec![1, 1, 1, 1]);
+    let xs: Vec<f64> = r[3]["points"]
+        .as_array()
+        .expect("points")
+        .iter()
+        .map(|p| f(&p["xyz"][0]))
+        .collect();
+    assert_eq!(xs, vec![-4.0, -2.0, 2.0, 4.0]);
+}
+
+#[test]
+fn plane_conics_and_clipped_lines_are_exact() {
+    let r = solve(&[
+        // Exact input strings: the segment ends at x = 1/3 and touches the circle at
+        // (0, 1), its parameter 6/7.
+        r#"{"id":"s","op":"intersect","objects":[{"type":"segment2","a":[-2,1],"b":["1/3",1]},{"type":"circle2","center":[0,0],"radius":1}]}"#,
+        // The same line cut off before the circle: nothing.
+        r#"{"id":"short","op":"intersect","objects":[{"type":"segment2","a":[-2,1],"b":[-1,1]},{"type":"circle2","center":[0,0],"radius":1}]}"#,
+        // The unit circle inside x² + 4y² = 4, touching it at (0, ±1).
+        r#"{"id":"cc","op":"intersect","objects":[{"type":"conic2","coeffs":[1,0,1,0,0,-1]},{"type":"conic2","coeffs":[1,0,4,0,0,-4]}]}"#,
+        // A space segment reaching into a sphere: one crossing at t = 1/3.
+        r#"{"id":"seg","op":"intersect","objects":[{"type":"sphere","center":[0,0,0],"radius":2},{"type":"segment","a":[-3,0,0],"b":[0,0,0]}]}"#,
+    ]);
+    let s = &r[0];
+    assert_eq!(s["status"], "exact", "{s}");
+    let p = &s["points"][0];
+    assert_eq!(p["multiplicity"], 2);
+    assert_eq!(p["exact"]["params"][0], serde_json::json!(["6/7"]), "{p}");
+    assert_eq!(r[1]["kind"], "empty", "{}", r[1]);
+    assert_eq!(r[1]["status"], "exact");
+    let cc = r[2]["points"].as_array().expect("points");
+    assert_eq!(cc.len(), 2, "{}", r[2]);
+    for (p, y) in cc.iter().zip([-1.0, 1.0]) {
+        assert_eq!((f(&p["xyz"][0]), f(&p["xyz"][1])), (0.0, y));
+        assert_eq!(p["multiplicity"], 2);
+    }
+    let seg = &r[3]["points"].as_array().expect("points");
+    assert_eq!(seg.len(), 1, "{}", r[3]);
+    assert_eq!(seg[0]["exact"]["params"][1], serde_json::json!(["1/3"]));
+    assert_eq!(seg[0]["exact"]["xyz"], serde_json::json!(["-2", "0", "0"]));
+}
+
+#[test]
+fn a_tangency_outside_the_algebraic_cases_is_verified_singular() {
+    // A cylinder piece (its height cuts the implicit surface) goes to the certifier.
+    let r = solve(&[
+        r#"{"id":"c","op":"intersect","objects":[{"type":"line","origin":[-3,1,0.5],"dir":[1,0,0]},{"type":"cylinder","origin":[0,0,0],"radius":1,"axis":[0,0,1],"height":[0,1]}]}"#,
+    ]);
+    assert_eq!(r[0]["status"], "verified_singular", "{}", r[0]);
+    let p = &r[0]["points"][0];
+    assert_eq!(p["multiplicity"], 2);
+    let b = &p["box"];
+    assert!(f(&b[0][0]) <= 0.0 && 0.0 <= f(&b[0][1]), "{p}");
+    assert!(f(&b[1][0]) <= 1.0 && 1.0 <= f(&b[1][1]), "{p}");
+}
+
+#[test]
+fn a_foot_on_the_seam_is_reported_once() {
+    // (3, 0, 1.9) onto a cylinder: feet at u = 0 (= 2π, on the seam) and u = π. The
+    // seam root is found at both ends of the domain and must be counted once.
+    let r = solve(&[
+        r#"{"id":"seam","op":"project","point":[3,0,1.9],"onto":{"type":"cylinder","origin":[0,0,0],"radius":1,"axis":[0,0,1],"height":[0,2]}}"#,
+    ]);
+    assert_eq!(r[0]["status"], "verified", "{}", r[0]);
+    assert_eq!(r[0]["complete"], true);
+    let mut d: Vec<f64> = r[0]["points"]
+        .as_array()
+        .expect("points")
+        .iter()
+        .map(|p| f(&p["distance"]))
+        .collect();
+    d.sort_by(f64::total_cmp);
+    assert_eq!(d.len(), 2, "{}", r[0]);
+    assert!((d[0] - 2.0).abs() < 1e-12 && (d[1] - 4.0).abs() < 1e-12);
 }

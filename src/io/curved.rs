@@ -18,6 +18,7 @@ use crate::num::Interval;
 use crate::ops::certified::{CertifiedPoint, Options};
 use crate::ops::closed_surface::{classify_point_closed_surface, ClosedSurface};
 use crate::ops::float::Precision;
+use crate::ops::nearest::{self, Nearest, NearestChoice};
 use crate::ops::{intersect, project};
 use crate::surface::any::AnySurface;
 use crate::surface::Surface;
@@ -50,7 +51,10 @@ fn solve(case: &Case) -> Result<CaseResult, GeomError> {
     };
     match case.op {
         Op::Project => project_case(case, &precision, &opts),
-        Op::Intersect => intersect_case(case, &precision, &opts),
+        Op::Intersect => match super::exact_curved::try_exact(case) {
+            Some(exact) => exact,
+            None => intersect_case(case, &precision, &opts),
+        },
         Op::Classify => classify_case(case),
         other => Err(unsupported(
             "op",
@@ -285,7 +289,7 @@ fn project_case(
         field: "point".into(),
         message: "missing field `point`".into(),
     })?;
-    let mut result = match onto {
+    match onto {
         ObjectSpec::Surface(spec) => {
             let s = at(spec.build(), "onto")?;
             let p = doubles::<3>(point, "point")?;
@@ -297,8 +301,15 @@ fn project_case(
                         field: "direction".into(),
                     });
                 }
-                let ray = project::direction::ray_through(&s, &p, &d, &nodes);
-                let line = AnyCurve3::Line(Line::new(p, d, Some((ray.range[0], ray.range[1])))?);
+                // The ray's parameters that can meet the surface at all (a certified
+                // box of the whole surface), so that `complete` covers every hit.
+                let range = reach(&p, &d, Some(&surface_box(&s))).ok_or_else(|| {
+                    unsupported(
+                        "onto",
+                        "projection along a direction needs a bounded surface".into(),
+                    )
+                })?;
+                let line = AnyCurve3::Line(Line::new(p, d, Some(range))?);
                 let samples = curve_samples(&line)?;
                 let c = intersect::intersect_curve_surface(
                     &s,
@@ -309,10 +320,17 @@ fn project_case(
                     precision,
                     opts,
                 )?;
-                points_result(case, "points", c, &[2, 1], Some(p))
+                let mut r = points_result(case, "points", c, &[2, 1], Some(p));
+                if case.nearest {
+                    keep_nearest_hit(&mut r);
+                }
+                Ok(r)
             } else {
                 let c = project::project_point_on_surface(&s, &p, &nodes, precision, opts)?;
-                points_result(case, "points", c, &[2], Some(p))
+                let nearest = case
+                    .nearest
+                    .then(|| nearest::nearest_on_surface(&s, &p, &c));
+                Ok(projection_result(case, c, &[2], p, nearest))
             }
         }
         ObjectSpec::Curve3(spec) => {
@@ -320,7 +338,8 @@ fn project_case(
             let p = doubles::<3>(point, "point")?;
             let c =
                 project::project_point_on_curve(&c3, &p, &curve_samples(&c3)?, precision, opts)?;
-            points_result(case, "points", c, &[1], Some(p))
+            let nearest = case.nearest.then(|| nearest::nearest_on_curve(&c3, &p, &c));
+            Ok(projection_result(case, c, &[1], p, nearest))
         }
         ObjectSpec::Curve2(spec) => {
             let PlaneShape::Curve(c2) = at(spec.build(), "onto")? else {
@@ -332,19 +351,88 @@ fn project_case(
             let p = doubles::<2>(point, "point")?;
             let c =
                 project::project_point_on_curve(&c2, &p, &curve_samples(&c2)?, precision, opts)?;
-            points_result(case, "points", c, &[1], Some(p))
+            let nearest = case.nearest.then(|| nearest::nearest_on_curve(&c2, &p, &c));
+            Ok(projection_result(case, c, &[1], p, nearest))
         }
-        _ => return Err(unsupported("onto", "expected a curved object".into())),
-    };
-    if case.nearest {
-        keep_nearest(&mut result);
+        _ => Err(unsupported("onto", "expected a curved object".into())),
     }
-    Ok(result)
 }
 
-/// `nearest`: keep the point of smallest distance. It is proven nearest only when the
-/// answer is complete and its distance enclosure lies below every other's.
-fn keep_nearest(r: &mut CaseResult) {
+/// The feet of a projection, or with `nearest` the one nearest point and whether it
+/// is proven ([`nearest`]).
+fn projection_result<const D: usize>(
+    case: &Case,
+    feet: Certified<Vec<CertifiedPoint<D>>>,
+    sizes: &[usize],
+    p: [f64; D],
+    nearest: Option<Option<Nearest<D>>>,
+) -> CaseResult {
+    let Some(nearest) = nearest else {
+        return points_result(case, "points", feet, sizes, Some(p));
+    };
+    let complete = feet.complete;
+    let mut r = points_result(case, "points", feet.clone(), sizes, Some(p));
+    let Some(n) = nearest else {
+        // No foot and no end: the nearest point lies on a surface's edge.
+        r.status = Status::Undecided.as_str();
+        r.kind = Some("empty");
+        r.reason = Some(if complete {
+            "no foot in the interior: the nearest point lies on the surface's boundary, which is not searched".into()
+        } else {
+            feet.reason
+                .clone()
+                .unwrap_or_else(|| "the search is incomplete".into())
+        });
+        return r;
+    };
+    let mut point = match &n.choice {
+        NearestChoice::Foot(i) => {
+            let mut pts = r.points.take().unwrap_or_default();
+            r.status = feet.value[*i].root.status.as_str();
+            pts.swap_remove(*i)
+        }
+        NearestChoice::End {
+            t,
+            t_box,
+            point,
+            point_box,
+        } => {
+            r.kind = Some("points");
+            r.status = Status::Verified.as_str();
+            PointOut {
+                xyz: point.to_vec(),
+                params: vec![vec![*t]],
+                bounds: bounds(point_box),
+                param_box: Some(vec![vec![[t_box.lo(), t_box.hi()]]]),
+                multiplicity: 1,
+                distance: Some(
+                    point
+                        .iter()
+                        .zip(p)
+                        .map(|(a, b)| (a - b) * (a - b))
+                        .sum::<f64>()
+                        .sqrt(),
+                ),
+                ..Default::default()
+            }
+        }
+    };
+    point.nearest = Some(true);
+    r.points = Some(vec![point]);
+    if n.status == Status::Undecided {
+        r.status = Status::Undecided.as_str();
+        r.reason = n.reason;
+    } else {
+        // The nearest point is proven: the answer (one point) is complete.
+        r.complete = Some(true);
+        r.reason = None;
+    }
+    r
+}
+
+/// `nearest` along a direction: the hit of smallest distance; proven only when the
+/// hits are complete and its distance enclosure lies below every other's.
+fn keep_nearest_hit(r: &mut CaseResult) {
     let Some(points) = r.points.as_mut() else {
         return;
     };
@@ -356,16 +444,28 @@ fn keep_nearest(r: &mut CaseResult) {
             .unwrap_or(f64::INFINITY)
             .total_cmp(&b.distance.unwrap_or(f64::INFINITY))
     });
-    let separated = points.len() == 1 || {
-        let gap = points[1].distance.unwrap_or(0.0) - points[0].distance.unwrap_or(0.0);
-        let width = |p: &PointOut| p.bounds.iter().map(|[a, b]| b - a).fold(0.0, f64::max);
-        gap > 4.0 * (width(&points[0]) + width(&points[1]))
+    // |t| along the ray, enclosed by the certified parameter box of each hit.
+    let t_abs = |q: &PointOut| {
+        q.param_box
+            .as_ref()
+            .and_then(|b| b.get(1))
+            .and_then(|t| t.first())
+            .map(|&[lo, hi]| Interval::from_bounds(lo, hi).abs())
+    };
+    let separated = match t_abs(&points[0]) {
+        Some(t0) => points[1..]
+            .iter()
+            .all(|q| t_abs(q).is_some_and(|t| t0.hi() < t.lo())),
+        None => false,
     };
     points.truncate(1);
     points[0].nearest = Some(true);
     if !(separated && r.complete == Some(true)) {
         r.status = Status::Undecided.as_str();
-        r.reason = Some("the nearest point is not proven: the search is incomplete or two feet are not separated".into());
+        r.reason = Some(
+            "the nearest hit is not proven: the search is incomplete or two hits are not separated"
+                .into(),
+        );
     }
 }
 

@@ -4,6 +4,7 @@
 mod build;
 pub mod case;
 pub mod curved;
+mod exact_curved;
 mod linear_out;
 pub mod number;
 pub mod objects;

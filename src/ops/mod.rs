@@ -7,6 +7,7 @@ pub mod classify;
 pub mod closed_surface;
 pub mod float;
 pub mod intersect;
+pub mod nearest;
 pub mod polyhedron;
 pub mod project;
 

@@ -34,8 +34,9 @@ pub fn intersect_line_quadric<const D: usize>(
     Ok(line_quadric(&o, &d, quadric))
 }
 
-/// [`intersect_line_quadric`] on exact data.
-fn line_quadric<const D: usize>(
+/// [`intersect_line_quadric`] on exact data (`o + t·d`; `d` need not be a double, as
+/// for a segment's `b − a`).
+pub fn line_quadric<const D: usize>(
     o: &[Rational; D],
     d: &[Rational; D],
     quadric: &QuadricForm<D>,
@@ -118,9 +119,18 @@ pub fn intersect_line_torus(
     torus: &TorusData,
 ) -> Result<Certified<LineCut<3>>, GeomError> {
     let (o, d) = exact_line(&origin, &direction)?;
+    Ok(line_torus(&o, &d, torus))
+}
+
+/// [`intersect_line_torus`] on exact data (`d ≠ 0`).
+pub fn line_torus(
+    o: &[Rational; 3],
+    d: &[Rational; 3],
+    torus: &TorusData,
+) -> Certified<LineCut<3>> {
     if torus.major.cmp0() == std::cmp::Ordering::Equal {
         let sphere = QuadricForm::sphere_exact(&torus.center, &torus.minor);
-        return Ok(line_quadric(&o, &d, &sphere));
+        return line_quadric(o, d, &sphere);
     }
     let a = &torus.axis;
     let w: [Rational; 3] = std::array::from_fn(|i| Rational::from(&o[i] - &torus.center[i]));
@@ -128,8 +138,8 @@ pub fn intersect_line_torus(
     let r2 = Rational::from(&torus.major * &torus.major);
     let k = r2.clone() - Rational::from(&torus.minor * &torus.minor);
     // |q|², q·a and the coordinates of q as polynomials in t.
-    let qq = Polynomial::from_coeffs(vec![dot(&w, &w), dot(&w, &d) * 2u32, dot(&d, &d)]);
-    let qa = affine(&dot(&w, a), &dot(&d, a));
+    let qq = Polynomial::from_coeffs(vec![dot(&w, &w), dot(&w, d) * 2u32, dot(d, d)]);
+    let qa = affine(&dot(&w, a), &dot(d, a));
     let constant = |x: Rational| Polynomial::constant(x);
     let s = &qq + &constant(k);
     let squared = (&s * &s).scale(&aa);
@@ -141,7 +151,7 @@ pub fn intersect_line_torus(
     let gradient: Vec<Polynomial> = (0..3)
         .map(|i| &(&radial * &affine(&w[i], &d[i])) + &axial.scale(&a[i]))
         .collect();
-    let mut cut = line_cut(&o, &d, &quartic, &gradient);
+    let mut cut = line_cut(o, d, &quartic, &gradient);
     if torus.minor > torus.major {
         if let LineCut::Points(hits) = &mut cut.value {
             hits.retain_mut(|h| sign_at_root(&mut h.t, &s) != std::cmp::Ordering::Less);
@@ -151,5 +161,5 @@ pub fn intersect_line_torus(
                 .into(),
         );
     }
-    Ok(cut)
+    cut
 }

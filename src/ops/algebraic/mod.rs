@@ -25,6 +25,7 @@ mod quadric;
 pub use conic_conic::{intersect_conics, ConicCut, ConicHit};
 pub use line::{LineCut, LineHit};
 pub use line_surface::{
-    intersect_line_conic, intersect_line_quadric, intersect_line_torus, TorusData,
+    intersect_line_conic, intersect_line_quadric, intersect_line_torus, line_quadric, line_torus,
+    TorusData,
 };
 pub use quadric::{Conic, QuadricForm};

@@ -21,6 +21,8 @@ use crate::num::Interval;
 
 pub use crate::certify::Options;
 
+mod seam;
+
 /// The unknowns of an operation: their domain and which are periodic.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Unknowns {
@@ -159,6 +161,7 @@ pub fn certify_roots<S: System>(
         complete = false;
         reason.get_or_insert_with(|| "a root straddles the domain boundary".into());
     }
+    seam::drop_seam_copies(sys, &mut roots, unknowns);
     let perturbation = roots.iter().filter_map(|r| r.perturbation).reduce(f64::max);
     roots.sort_by(|a, b| {
         a.params
