@@ -351,3 +351,38 @@ fn a_foot_on_the_seam_is_reported_once() {
     assert_eq!(d.len(), 2, "{}", r[0]);
     assert!((d[0] - 2.0).abs() < 1e-12 && (d[1] - 4.0).abs() < 1e-12);
 }
+
+#[test]
+fn classify_reports_the_proven_nearest_point_of_the_shell() {
+    let r = solve(&[
+        r#"{"id":"in","op":"classify","point":[3.5,0,0],"shell":{"type":"torus","center":[0,0,0],"major":3,"minor":1,"axis":[0,0,1]}}"#,
+        r#"{"id":"out","op":"classify","point":[0,0,0],"shell":{"type":"sphere","center":[1,1,1],"radius":1}}"#,
+        r#"{"id":"centre","op":"classify","point":[1,1,1],"shell":{"type":"sphere","center":[1,1,1],"radius":1}}"#,
+    ]);
+    assert_eq!(r[0]["kind"], "inside");
+    let p = &r[0]["points"][0];
+    assert_eq!(p["nearest"], true, "{}", r[0]);
+    // (4, 0, 0) at distance 1/2, inside the certified box.
+    for (b, x) in p["box"]
+        .as_array()
+        .expect("box")
+        .iter()
+        .zip([4.0, 0.0, 0.0])
+    {
+        assert!(f(&b[0]) <= x && x <= f(&b[1]), "{p}");
+    }
+    assert!((f(&p["distance"]) - 0.5).abs() < 1e-12);
+    assert_eq!(r[1]["kind"], "outside");
+    let q = &r[1]["points"][0];
+    let x = 1.0 - 1.0 / 3f64.sqrt();
+    for b in q["box"].as_array().expect("box") {
+        assert!(
+            f(&b[0]) <= x && x <= f(&b[1]) && f(&b[1]) - f(&b[0]) < 1e-12,
+            "{q}"
+        );
+    }
+    // Every point of the sphere is nearest to its centre: no point, and the reason.
+    assert_eq!(r[2]["kind"], "inside");
+    assert!(r[2].get("points").is_none(), "{}", r[2]);
+    assert!(r[2]["reason"].as_str().expect("reason").contains("centre"));
+}

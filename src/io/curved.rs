@@ -16,6 +16,7 @@ use crate::curve::Curve;
 use crate::error::GeomError;
 use crate::num::Interval;
 use crate::ops::certified::{CertifiedPoint, Options};
+use crate::ops::classify::Side;
 use crate::ops::closed_surface::{classify_point_closed_surface, ClosedSurface};
 use crate::ops::float::Precision;
 use crate::ops::nearest::{self, Nearest, NearestChoice};
@@ -55,7 +56,7 @@ fn solve(case: &Case) -> Result<CaseResult, GeomError> {
             Some(exact) => exact,
             None => intersect_case(case, &precision, &opts),
         },
-        Op::Classify => classify_case(case),
+        Op::Classify => classify_case(case, &precision, &opts),
         other => Err(unsupported(
             "op",
             format!("`{}` is not implemented for curved objects", other.as_str()),
@@ -562,7 +563,11 @@ fn intersect_case(
     }
 }
 
-fn classify_case(case: &Case) -> Result<CaseResult, GeomError> {
+fn classify_case(
+    case: &Case,
+    precision: &Precision,
+    opts: &Options,
+) -> Result<CaseResult, GeomError> {
     let point = case.point.as_ref().ok_or_else(|| GeomError::Format {
         field: "point".into(),
         message: "missing field `point`".into(),
@@ -575,7 +580,7 @@ fn classify_case(case: &Case) -> Result<CaseResult, GeomError> {
         ));
     };
     // Validate through the surface builder (typed errors naming the field).
-    at(spec.build(), "shell")?;
+    let surface = at(spec.build(), "shell")?;
     use super::shapes::surface::SurfaceSpec as S;
     let closed = match spec {
         S::Sphere(s) => ClosedSurface::Sphere {
@@ -606,7 +611,92 @@ fn classify_case(case: &Case) -> Result<CaseResult, GeomError> {
     };
     let c = classify_point_closed_surface(&p, &closed);
     let kind = c.value.as_str();
-    Ok(CaseResult::certified(case.id.clone(), kind, &c))
+    let mut r = CaseResult::certified(case.id.clone(), kind, &c);
+    // §4: the verdict comes with the nearest point of the shell, when it is proven.
+    let nearest = match (&c.value, spec) {
+        (Side::On, _) => Ok(exact_point(p)),
+        (_, S::Sphere(s)) => nearest_on_sphere(&p, s.center, s.radius),
+        _ => {
+            let feet = project::project_point_on_surface(
+                &surface,
+                &p,
+                &surface_nodes(&surface)?,
+                precision,
+                opts,
+            )?;
+            nearest_foot(&surface, &p, &feet)
+        }
+    };
+    match nearest {
+        Ok(mut point) => {
+            point.nearest = Some(true);
+            r.points = Some(vec![point]);
+        }
+        Err(why) => r.reason = Some(format!("the nearest point is not proven: {why}")),
+    }
+    Ok(r)
+}
+
+/// The query point itself, on the shell: its own nearest point at distance 0.
+fn exact_point(p: [f64; 3]) -> PointOut {
+    PointOut {
+        xyz: p.to_vec(),
+        bounds: p.iter().map(|&x| [x, x]).collect(),
+        multiplicity: 1,
+        distance: Some(0.0),
+        ..Default::default()
+    }
+}
+
+/// The nearest point of a sphere, `c + r (p − c)/|p − c|`, enclosed in interval
+/// arithmetic (outward rounding); unique unless `p = c`.
+fn nearest_on_sphere(p: &[f64; 3], center: [f64; 3], radius: f64) -> Result<PointOut, String> {
+    let d: [Interval; 3] =
+        std::array::from_fn(|i| Interval::point(p[i]) - Interval::point(center[i]));
+    let len = (d[0].sqr() + d[1].sqr() + d[2].sqr()).sqrt();
+    if len.contains_zero() {
+        return Err("the point is the centre: every point of the sphere is nearest".into());
+    }
+    let b: [Interval; 3] =
+        std::array::from_fn(|i| Interval::point(center[i]) + d[i] * Interval::point(radius) / len);
+    let distance = (len - Interval::point(radius)).abs();
+    Ok(PointOut {
+        xyz: b.iter().map(|x| x.midpoint()).collect(),
+        bounds: bounds(&b),
+        multiplicity: 1,
+        distance: Some(distance.midpoint()),
+        ..Default::default()
+    })
+}
+
+/// The proven nearest of the certified feet ([`nearest::nearest_on_surface`]).
+fn nearest_foot<S: Surface>(
+    s: &S,
+    p: &[f64; 3],
+    feet: &Certified<Vec<CertifiedPoint<3>>>,
+) -> Result<PointOut, String> {
+    let n = nearest::nearest_on_surface(s, p, feet).ok_or("no foot was found")?;
+    if n.status == Status::Undecided {
+        return Err(n.reason.unwrap_or_default());
+    }
+    let NearestChoice::Foot(i) = n.choice else {
+        return Err("the nearest point is not a foot".into());
+    };
+    let f = &feet.value[i];
+    Ok(PointOut {
+        xyz: f.point.to_vec(),
+        params: vec![f.root.params.clone()],
+        bounds: bounds(&f.point_box),
+        param_box: Some(vec![f
+            .root
+            .enclosure
+            .iter()
+            .map(|x| [x.lo(), x.hi()])
+            .collect()]),
+        multiplicity: if f.root.is_singular() { 2 } else { 1 },
+        distance: Some(n.distance.midpoint()),
+        ..Default::default()
+    })
 }
 
 #[cfg(test)]
