@@ -386,3 +386,28 @@ fn classify_reports_the_proven_nearest_point_of_the_shell() {
     assert!(r[2].get("points").is_none(), "{}", r[2]);
     assert!(r[2]["reason"].as_str().expect("reason").contains("centre"));
 }
+
+#[test]
+fn space_curves_are_proven_apart_or_boxed_where_they_meet() {
+    let r = solve(&[
+        r#"{"id":"miss","op":"intersect","objects":[{"type":"circle","center":[0,0,0],"radius":1,"axis":[0,0,1]},{"type":"circle","center":[0,0,0.001],"radius":1,"axis":[0,0,1]}]}"#,
+        r#"{"id":"near","op":"intersect","objects":[{"type":"circle","center":[0,0,0],"radius":1,"axis":[0,0,1]},{"type":"segment","a":[1,0,1e-9],"b":[1,1,1e-9]}]}"#,
+        r#"{"id":"helix","op":"intersect","objects":[{"type":"helix","center":[0,0,0],"radius":1,"pitch":1,"axis":[0,0,1],"range":[0,12.566370614359172]},{"type":"line","origin":[0,1,-5],"dir":[0,0,1]}]}"#,
+    ]);
+    // Parallel circles 1e-3 apart and a segment 1e-9 above a circle: proven disjoint.
+    for x in &r[..2] {
+        assert_eq!(x["status"], "verified", "{x}");
+        assert_eq!(x["kind"], "empty");
+        assert_eq!(x["complete"], true);
+    }
+    // The helix crosses the line at z = 1/4 and 5/4: two undecided boxes holding them.
+    let h = &r[2];
+    assert_eq!(h["status"], "undecided", "{h}");
+    let pts = h["points"].as_array().expect("points");
+    assert_eq!(pts.len(), 2, "{h}");
+    for (p, z) in pts.iter().zip([0.25, 1.25]) {
+        for (b, x) in p["box"].as_array().expect("box").iter().zip([0.0, 1.0, z]) {
+            assert!(f(&b[0]) <= x && x <= f(&b[1]), "{p}");
+        }
+    }
+}

@@ -217,6 +217,12 @@ fn surface_box<S: Surface>(s: &S) -> [Interval; 3] {
     b.swap_remove(0)
 }
 
+/// A certified box of a whole curve.
+fn curve_box<C: Curve<3>>(c: &C) -> [Interval; 3] {
+    let (lo, hi) = c.domain();
+    c.jet(&Interval::from_bounds(lo, hi), 0).swap_remove(0)
+}
+
 fn bounds<const D: usize>(b: &[Interval; D]) -> Vec<Bounds> {
     b.iter().map(|x| [x.lo(), x.hi()]).collect()
 }
@@ -491,6 +497,40 @@ fn intersect_case(
                 precision,
                 opts,
             )?;
+            Ok(points_result(case, "points", c, &[1, 1], None))
+        }
+        [a, b]
+            if [a, b].iter().all(|o| {
+                matches!(
+                    o,
+                    ObjectSpec::Curve3(_) | ObjectSpec::Line(_) | ObjectSpec::Segment(_)
+                )
+            }) =>
+        {
+            // Two space curves: a line without a range is cut to the other's box.
+            let (ca, cb) = match (
+                build_curve3(a, &field(0), None),
+                build_curve3(b, &field(1), None),
+            ) {
+                (Ok(Some(ca)), Ok(Some(cb))) => (ca, cb),
+                (Ok(Some(ca)), Err(_)) => {
+                    let cb = build_curve3(b, &field(1), Some(&curve_box(&ca)))?;
+                    (
+                        ca,
+                        cb.ok_or_else(|| unsupported(&field(1), "expected a space curve".into()))?,
+                    )
+                }
+                (Err(_), Ok(Some(cb))) => {
+                    let ca = build_curve3(a, &field(0), Some(&curve_box(&cb)))?;
+                    (
+                        ca.ok_or_else(|| unsupported(&field(0), "expected a space curve".into()))?,
+                        cb,
+                    )
+                }
+                (Err(e), _) | (_, Err(e)) => return Err(e),
+                _ => return Err(unsupported("objects", "expected two space curves".into())),
+            };
+            let c = crate::ops::space_curves::intersect_space_curves(&ca, &cb, opts);
             Ok(points_result(case, "points", c, &[1, 1], None))
         }
         [a, b] => {

@@ -10,6 +10,7 @@ pub mod intersect;
 pub mod nearest;
 pub mod polyhedron;
 pub mod project;
+pub mod space_curves;
 
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use polyhedron::Polyhedron;
