@@ -55,7 +55,7 @@ fn analytic_surfaces_name_the_bad_field() {
         ),
         (
             json!({"type": "sphere", "center": [0, 0, 0], "radius": 1, "ref": [0, 0, 0]}),
-            pair("invalid_value", "ref"),
+            pair("zero_direction", "ref"),
         ),
         (
             json!({"type": "sphere", "center": [0, 0, 0], "radius": 1, "domain": [[0, 1], [-2, 0]]}),

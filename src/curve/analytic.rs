@@ -214,7 +214,7 @@ impl Curve<3> for Analytic {
         self.closed
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; 3]> {
-        self.frame.map_jet(&self.shape.local_jet(t, order.min(3)))
+        self.frame.place_jet(&self.shape.local_jet(t, order.min(3)))
     }
     fn step_hint(&self, _t: f64) -> StepHint {
         self.shape.step_hint()

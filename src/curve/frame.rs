@@ -11,18 +11,30 @@
 //! `Z = a/|a|`, `X = w/|w|`, `Y = (a × w)/(|a||w|)`,
 //! so an interval evaluation encloses the exact orthonormal frame of the double inputs.
 
+use std::any::TypeId;
+
 use crate::error::{require_finite_all, GeomError};
 use crate::geom::objects::Coord;
-use crate::num::vector::{add_scaled, cross, dot, lift, norm_sq, scale};
+use crate::num::vector::{add, add_scaled, cross, dot, lift, norm_sq, scale, sub};
 use crate::num::Real;
 use nalgebra::Vector3;
 
 /// An origin with an orthonormal frame given by `axis` (Z) and an optional `ref` (X).
+/// One frame serves curves and surfaces (`crate::surface::frame` re-exports it).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Frame {
     origin: [f64; 3],
     axis: [f64; 3],
     reference: Option<[f64; 3]>,
+    /// `[X, Y, Z]` evaluated once in f64 by the same generic formula ([`Frame::axes`]
+    /// returns it for `T = f64` instead of recomputing it).
+    cached: [[f64; 3]; 3],
+}
+
+/// `a × b = 0` decided exactly (the inputs are exact doubles): `a` and `b` are
+/// parallel, or one of them is zero.
+pub fn exactly_parallel(a: &[f64; 3], b: &[f64; 3]) -> bool {
+    <f64 as Coord>::cross_is_zero(&Vector3::from(*a), &Vector3::from(*b))
 }
 
 impl Frame {
@@ -48,18 +60,21 @@ impl Frame {
                     field: "ref".into(),
                 });
             }
-            if <f64 as Coord>::cross_is_zero(&Vector3::from(r), &Vector3::from(axis)) {
+            if exactly_parallel(&r, &axis) {
                 return Err(GeomError::InvalidValue {
                     field: "ref".into(),
                     reason: "ref is parallel to axis, so it gives no X direction".into(),
                 });
             }
         }
-        Ok(Frame {
+        let mut frame = Frame {
             origin,
             axis,
             reference,
-        })
+            cached: [[0.0; 3]; 3],
+        };
+        frame.cached = frame.compute_axes(&0.0f64);
+        Ok(frame)
     }
 
     /// The frame at `origin` with axis +z and no `ref`: `X = +x`, `Y = +y`, `Z = +z`.
@@ -98,8 +113,18 @@ impl Frame {
         e
     }
 
-    /// `[X, Y, Z]` in the number system of `like` (see the module documentation).
+    /// `[X, Y, Z]` in the number system of `like` (see the module documentation). For
+    /// intervals each entry encloses the exact frame of the exact input (every step is
+    /// an enclosing [`Real`] operation); for f64 it is the f64 evaluation of the same
+    /// formula, computed once.
     pub fn axes<T: Real>(&self, like: &T) -> [[T; 3]; 3] {
+        if TypeId::of::<T>() == TypeId::of::<f64>() {
+            return self.cached.map(|a| lift(like, &a));
+        }
+        self.compute_axes(like)
+    }
+
+    fn compute_axes<T: Real>(&self, like: &T) -> [[T; 3]; 3] {
         let a = lift(like, &self.axis);
         let r = lift(like, &self.reference_or_default());
         let a_sq = norm_sq(&a);
@@ -114,26 +139,42 @@ impl Frame {
         [x, y, z]
     }
 
-    /// Map a jet in local coordinates (`[x, y, z]` per derivative order) to space:
-    /// `c = p + x X + y Y + z Z`, derivatives without `p`.
-    pub fn map_jet<T: Real>(&self, local: &[[T; 3]]) -> Vec<[T; 3]> {
+    /// `x·X + y·Y + z·Z` (a direction: no origin).
+    pub fn to_world_vector<T: Real>(axes: &[[T; 3]; 3], local: &[T; 3]) -> [T; 3] {
+        std::array::from_fn(|i| {
+            local[0].clone() * &axes[0][i]
+                + local[1].clone() * &axes[1][i]
+                + local[2].clone() * &axes[2][i]
+        })
+    }
+
+    /// A jet in local coordinates (`[x, y, z]` per derivative order) placed in space:
+    /// `c = p + x X + y Y + z Z`, derivatives rotated only.
+    pub fn place_jet<T: Real>(&self, local: &[[T; 3]]) -> Vec<[T; 3]> {
         let Some(first) = local.first() else {
             return Vec::new();
         };
-        let [x, y, z] = self.axes(&first[0]);
+        let axes = self.axes(&first[0]);
+        let origin = lift(&first[0], &self.origin);
         local
             .iter()
             .enumerate()
             .map(|(k, l)| {
-                std::array::from_fn(|i| {
-                    let v = l[0].clone() * &x[i] + l[1].clone() * &y[i] + l[2].clone() * &z[i];
-                    if k == 0 {
-                        v + l[0].lift(self.origin[i])
-                    } else {
-                        v
-                    }
-                })
+                let w = Frame::to_world_vector(&axes, l);
+                if k == 0 {
+                    add(&w, &origin)
+                } else {
+                    w
+                }
             })
             .collect()
+    }
+
+    /// The local coordinates `((x−o)·X, (x−o)·Y, (x−o)·Z)` of a world point, with the
+    /// axes used (for the chain rule of implicit forms).
+    pub fn to_local<T: Real>(&self, x: &[T; 3]) -> ([T; 3], [[T; 3]; 3]) {
+        let axes = self.axes(&x[0]);
+        let d = sub(x, &lift(&x[0], &self.origin));
+        (std::array::from_fn(|i| dot(&d, &axes[i])), axes)
     }
 }

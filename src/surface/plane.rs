@@ -157,6 +157,6 @@ impl Surface for ParaboloidRect {
             local.push([zero.clone(), zero.clone(), zero.clone()]);
             local.push([zero.clone(), zero, two * &sign]);
         }
-        self.frame.place_jet(local)
+        self.frame.place_jet(&local)
     }
 }

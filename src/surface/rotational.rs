@@ -53,5 +53,5 @@ pub(crate) fn rotational_jet<T: Real>(
             local.push([a * f2 * &cu, b * f2 * &su, c * g2]);
         }
     }
-    frame.place_jet(local)
+    frame.place_jet(&local)
 }
