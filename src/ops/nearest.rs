@@ -77,15 +77,7 @@ pub fn nearest_on_curve<C: Curve<D>, const D: usize>(
     q: &[f64; D],
     feet: &Certified<Vec<CertifiedPoint<D>>>,
 ) -> Option<Nearest<D>> {
-    let mut candidates: Vec<(NearestChoice<D>, Interval, f64)> = feet
-        .value
-        .iter()
-        .enumerate()
-        .map(|(i, f)| {
-            let d = distance_enclosure(q, &f.point_box);
-            (NearestChoice::Foot(i), d, estimate(q, &f.point))
-        })
-        .collect();
+    let mut candidates = foot_candidates(q, feet);
     if !curve.is_closed() {
         let (lo, hi) = curve.domain();
         let rounded = curve.domain_rounded();
@@ -114,19 +106,29 @@ pub fn nearest_on_surface<S: Surface>(
     q: &[f64; 3],
     feet: &Certified<Vec<CertifiedPoint<3>>>,
 ) -> Option<Nearest<3>> {
-    let candidates = feet
-        .value
+    let candidates = foot_candidates(q, feet);
+    decide(candidates, feet, |threshold| {
+        edges_farther(surface, q, threshold)
+    })
+}
+
+/// Each foot with its distance enclosure and float estimate.
+fn foot_candidates<const D: usize>(
+    q: &[f64; D],
+    feet: &Certified<Vec<CertifiedPoint<D>>>,
+) -> Vec<Candidate<D>> {
+    feet.value
         .iter()
         .enumerate()
         .map(|(i, f)| {
             let d = distance_enclosure(q, &f.point_box);
             (NearestChoice::Foot(i), d, estimate(q, &f.point))
         })
-        .collect();
-    decide(candidates, feet, |threshold| {
-        edges_farther(surface, q, threshold)
-    })
+        .collect()
 }
+
+/// A candidate, its distance enclosure and its float distance.
+type Candidate<const D: usize> = (NearestChoice<D>, Interval, f64);
 
 fn estimate<const D: usize>(q: &[f64; D], p: &[f64; D]) -> f64 {
     (0..D)
@@ -139,7 +141,7 @@ fn estimate<const D: usize>(q: &[f64; D], p: &[f64; D]) -> f64 {
 /// complete, its distance lies strictly below every other candidate's, and
 /// `boundary_farther(upper bound of its distance)` holds.
 fn decide<const D: usize>(
-    mut candidates: Vec<(NearestChoice<D>, Interval, f64)>,
+    mut candidates: Vec<Candidate<D>>,
     feet: &Certified<Vec<CertifiedPoint<D>>>,
     boundary_farther: impl Fn(f64) -> bool,
 ) -> Option<Nearest<D>> {
