@@ -411,3 +411,47 @@ fn space_curves_are_proven_apart_or_boxed_where_they_meet() {
         }
     }
 }
+
+#[test]
+fn projection_onto_a_sphere_is_complete_in_closed_form() {
+    let r = solve(&[
+        r#"{"id":"gen","op":"project","point":[1,2,3],"onto":{"type":"sphere","center":[0,0,0],"radius":1}}"#,
+        r#"{"id":"pole","op":"project","point":[0,0,5],"onto":{"type":"sphere","center":[0,0,0],"radius":2}}"#,
+    ]);
+    let g = &r[0];
+    assert_eq!(g["status"], "verified", "{g}");
+    assert_eq!(g["complete"], true);
+    let pts = g["points"].as_array().expect("points");
+    assert_eq!(pts.len(), 2);
+    let n = 14f64.sqrt();
+    for (p, sign) in pts.iter().zip([1.0, -1.0]) {
+        for (b, x) in p["box"]
+            .as_array()
+            .expect("box")
+            .iter()
+            .zip([1.0, 2.0, 3.0])
+        {
+            let x = sign * x / n;
+            assert!(
+                f(&b[0]) <= x && x <= f(&b[1]) && f(&b[1]) - f(&b[0]) < 1e-15,
+                "{p}"
+            );
+        }
+        assert!((f(&p["distance"]) - (n - sign)).abs() < 1e-14);
+        // The latitude v = ±asin(3/√14) lies in its box.
+        let v = &p["param_box"][0][1];
+        let truth = sign * (3.0 / n).asin();
+        assert!(
+            f(&v[0]) <= truth + 1e-15 && truth - 1e-15 <= f(&v[1]),
+            "{p}"
+        );
+    }
+    // On the axis: the poles, their longitude any angle.
+    let p = &r[1]["points"][0];
+    assert_eq!(p["xyz"], serde_json::json!([0.0, 0.0, 2.0]));
+    let u = &p["param_box"][0][0];
+    assert!(
+        f(&u[0]) <= 0.0 && f(&u[1]) >= 2.0 * std::f64::consts::PI,
+        "{p}"
+    );
+}

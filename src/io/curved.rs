@@ -8,6 +8,7 @@ use super::case::{Case, Op};
 use super::number::Num;
 use super::objects::{LineSpec, ObjectSpec, SegmentSpec};
 use super::result::{Bounds, CaseResult, PointOut};
+use super::shapes::surface::SurfaceSpec;
 use super::shapes::PlaneShape;
 use crate::certificate::{Certified, Status};
 use crate::curve::any::AnyCurve3;
@@ -17,7 +18,7 @@ use crate::error::GeomError;
 use crate::num::Interval;
 use crate::ops::certified::{CertifiedPoint, Options};
 use crate::ops::classify::Side;
-use crate::ops::closed_surface::{classify_point_closed_surface, ClosedSurface};
+use crate::ops::closed_surface::{classify_point_closed_surface, sphere_feet, ClosedSurface};
 use crate::ops::float::Precision;
 use crate::ops::nearest::{self, Nearest, NearestChoice};
 use crate::ops::{intersect, project};
@@ -332,6 +333,8 @@ fn project_case(
                     keep_nearest_hit(&mut r);
                 }
                 Ok(r)
+            } else if let Some(r) = sphere_projection(case, spec, &p) {
+                Ok(r)
             } else {
                 let c = project::project_point_on_surface(&s, &p, &nodes, precision, opts)?;
                 let nearest = case
@@ -363,6 +366,49 @@ fn project_case(
         }
         _ => Err(unsupported("onto", "expected a curved object".into())),
     }
+}
+
+/// Projection onto a whole sphere in closed form ([`sphere_feet`]): both feet, complete
+/// (the parametric search cannot finish there: every pole is a continuum of `(u, v)`
+/// roots). At a pole `u` is any angle and its box is the whole circle. `None` for other
+/// surfaces, and for the centre (left to the search, which says `undecided`).
+fn sphere_projection(case: &Case, spec: &SurfaceSpec, p: &[f64; 3]) -> Option<CaseResult> {
+    let SurfaceSpec::Sphere(s) = spec else {
+        return None;
+    };
+    if s.domain.is_some() {
+        return None;
+    }
+    let feet = sphere_feet(p, &s.center, s.radius)?;
+    let keep = if case.nearest { 1 } else { 2 };
+    let points = feet[..keep]
+        .iter()
+        .map(|(b, d)| {
+            let uv = super::exact_curved::sphere_params(spec, b).unwrap_or_default();
+            PointOut {
+                xyz: b.iter().map(|x| x.midpoint()).collect(),
+                params: vec![uv.iter().map(|x| x.0).collect()],
+                bounds: bounds(b),
+                param_box: Some(vec![uv.iter().map(|x| x.1).collect()]),
+                multiplicity: 1,
+                distance: Some(d.midpoint()),
+                nearest: case.nearest.then_some(true),
+                ..Default::default()
+            }
+        })
+        .collect();
+    let proof = Certified {
+        value: (),
+        status: Status::Verified,
+        complete: true,
+        arithmetic: crate::certificate::Arithmetic::Interval,
+        bits: 53,
+        reason: None,
+        perturbation: None,
+    };
+    let mut r = CaseResult::certified(case.id.clone(), "points", &proof);
+    r.points = Some(points);
+    Some(r)
 }
 
 /// The feet of a projection, or with `nearest` the one nearest point and whether it
@@ -688,18 +734,10 @@ fn exact_point(p: [f64; 3]) -> PointOut {
     }
 }
 
-/// The nearest point of a sphere, `c + r (p − c)/|p − c|`, enclosed in interval
-/// arithmetic (outward rounding); unique unless `p = c`.
+/// The nearest point of a sphere ([`sphere_feet`]), unique unless `p` is the centre.
 fn nearest_on_sphere(p: &[f64; 3], center: [f64; 3], radius: f64) -> Result<PointOut, String> {
-    let d: [Interval; 3] =
-        std::array::from_fn(|i| Interval::point(p[i]) - Interval::point(center[i]));
-    let len = (d[0].sqr() + d[1].sqr() + d[2].sqr()).sqrt();
-    if len.contains_zero() {
-        return Err("the point is the centre: every point of the sphere is nearest".into());
-    }
-    let b: [Interval; 3] =
-        std::array::from_fn(|i| Interval::point(center[i]) + d[i] * Interval::point(radius) / len);
-    let distance = (len - Interval::point(radius)).abs();
+    let [(b, distance), _] = sphere_feet(p, &center, radius)
+        .ok_or("the point is the centre: every point of the sphere is nearest")?;
     Ok(PointOut {
         xyz: b.iter().map(|x| x.midpoint()).collect(),
         bounds: bounds(&b),

@@ -195,8 +195,14 @@ fn angle(y: &Interval, x: &Interval) -> Interval {
     }
 }
 
-/// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`.
+/// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`; an empty
+/// enclosure (the angle of the origin) stands for the whole circle.
 fn param(b: Interval) -> (f64, [f64; 2]) {
+    if b.is_empty() {
+        // A point on the axis (a pole): every angle is its parameter.
+        let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
+        return (0.0, [0.0, two_pi.hi()]);
+    }
     let mut m = b.midpoint();
     if m < 0.0 {
         m += 2.0 * std::f64::consts::PI;
@@ -206,6 +212,15 @@ fn param(b: Interval) -> (f64, [f64; 2]) {
 
 fn point_box<const D: usize>(h: &LineHit<D>) -> [Interval; D] {
     std::array::from_fn(|i| Interval::from_bounds(h.point[i].lo, h.point[i].hi))
+}
+
+/// `(u, v)` (estimate, enclosure) of the points of the box `b` on a sphere without a
+/// `domain`; `None` for other shapes.
+pub(super) fn sphere_params(spec: &SurfaceSpec, b: &[Interval; 3]) -> Option<Vec<(f64, [f64; 2])>> {
+    match spec {
+        SurfaceSpec::Sphere(_) => closed_shape(spec).map(|shape| surface_params(&shape, b)),
+        _ => None,
+    }
 }
 
 /// `(u, v)` of a point of a closed surface (module doc).
@@ -219,11 +234,13 @@ fn surface_params(shape: &ClosedShape, p: &[Interval; 3]) -> Vec<(f64, [f64; 2])
     let rho = (q[0].sqr() + q[1].sqr()).sqrt();
     let u = angle(&q[1], &q[0]);
     let v = if major > 0.0 {
-        angle(&q[2], &(rho - Interval::point(major)))
+        param(angle(&q[2], &(rho - Interval::point(major))))
     } else {
-        q[2].atan2(&rho)
+        // The latitude, in [−π/2, π/2]: no wrapping.
+        let v = q[2].atan2(&rho);
+        (v.midpoint(), [v.lo(), v.hi()])
     };
-    vec![param(u), param(v)]
+    vec![param(u), v]
 }
 
 /// Compare the root `t` with the double `a`, exactly (refining an irrational root's

@@ -152,3 +152,28 @@ mod tests {
         );
     }
 }
+
+/// The feet of `p` on the sphere `|x − c| = r` (§3.4 in closed form): the critical
+/// points of `|p − x|²` on the sphere are where `p − x` is normal, `x = c ± r·e` with
+/// `e = (p − c)/|p − c|` — the nearest (`+`, at distance `| |p − c| − r |`) and the
+/// farthest (`−`, at `|p − c| + r`). Each point and distance is enclosed in f64 interval
+/// arithmetic (outward rounding, `num::interval`). `None` when `p` may be the centre
+/// (then every point of the sphere is a foot).
+pub fn sphere_feet(
+    p: &[f64; 3],
+    center: &[f64; 3],
+    radius: f64,
+) -> Option<[([crate::num::Interval; 3], crate::num::Interval); 2]> {
+    use crate::num::Interval;
+    let d: [Interval; 3] =
+        std::array::from_fn(|i| Interval::point(p[i]) - Interval::point(center[i]));
+    let len = (d[0].sqr() + d[1].sqr() + d[2].sqr()).sqrt();
+    if len.contains_zero() {
+        return None;
+    }
+    let r = Interval::point(radius);
+    let foot = |sign: f64| -> [Interval; 3] {
+        std::array::from_fn(|i| Interval::point(center[i]) + d[i] * r * Interval::point(sign) / len)
+    };
+    Some([(foot(1.0), (len - r).abs()), (foot(-1.0), len + r)])
+}
