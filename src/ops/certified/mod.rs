@@ -144,14 +144,21 @@ pub fn certify_roots<S: System>(
                 continue;
             }
             let c = certify::certify_root(sys, g, opts)?;
-            if c.status != Status::Undecided {
-                bits = bits.max(c.bits);
-                push_unique(
-                    &mut roots,
-                    CertifiedRoot::from_root(&c.value, false),
-                    unknowns,
-                );
+            if c.status == Status::Undecided {
+                continue;
             }
+            // The float answer may lie just outside the domain: a root proven outside
+            // is not an answer, one whose box crosses the boundary is undecided.
+            let place = placement(&c.value.enclosure, &search, unknowns);
+            if place == Placement::Outside {
+                continue;
+            }
+            bits = bits.max(c.bits);
+            push_unique(
+                &mut roots,
+                CertifiedRoot::from_root(&c.value, place == Placement::Straddles),
+                unknowns,
+            );
         }
     }
     let status = roots
@@ -190,24 +197,63 @@ pub fn certify_roots<S: System>(
 }
 
 /// Add `root` unless it is the seam copy of a root already found (module doc).
+///
+/// A root whose box lies (shifted by whole periods) inside a kept box is dropped: a
+/// `verified` box holds that one root, a `verified_singular` box counts up to two. A
+/// root whose box holds kept boxes replaces them when it may hold more roots than
+/// they count (a singular box over a simple one: dropping it would lose a root);
+/// otherwise the narrower kept box stays.
 fn push_unique(roots: &mut Vec<CertifiedRoot>, root: CertifiedRoot, unknowns: &Unknowns) {
-    let duplicate = roots.iter().any(|r| {
-        shifted_inside(&root.enclosure, &r.enclosure, unknowns)
-            || shifted_inside(&r.enclosure, &root.enclosure, unknowns)
-    });
-    if duplicate {
+    if let Some(r) = roots
+        .iter_mut()
+        .find(|r| shifted_inside(&root.enclosure, &r.enclosure, unknowns))
+    {
         // Keep the copy whose enclosure lies inside the domain.
-        if let Some(r) = roots
-            .iter_mut()
-            .find(|r| shifted_inside(&r.enclosure, &root.enclosure, unknowns))
-        {
-            if r.status == Status::Undecided && root.status != Status::Undecided {
-                *r = root;
-            }
+        if r.status == Status::Undecided && root.status != Status::Undecided {
+            *r = root;
         }
         return;
     }
-    roots.push(root);
+    let inside: Vec<usize> = (0..roots.len())
+        .filter(|&i| shifted_inside(&roots[i].enclosure, &root.enclosure, unknowns))
+        .collect();
+    if inside.is_empty() {
+        roots.push(root);
+        return;
+    }
+    let counted: u32 = inside.iter().map(|&i| roots[i].max_roots.max(1)).sum();
+    if root.max_roots > counted {
+        for &i in inside.iter().rev() {
+            roots.remove(i);
+        }
+        roots.push(root);
+    }
+}
+
+/// Where a root's enclosure lies against the domain in its non-periodic coordinates.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Placement {
+    Inside,
+    Straddles,
+    Outside,
+}
+
+fn placement(enclosure: &[Interval], search: &[[f64; 2]], unknowns: &Unknowns) -> Placement {
+    let mut straddles = false;
+    for ((x, &[lo, hi]), &periodic) in enclosure.iter().zip(search).zip(&unknowns.periodic) {
+        if periodic {
+            continue;
+        }
+        if x.hi() < lo || x.lo() > hi {
+            return Placement::Outside;
+        }
+        straddles |= x.lo() < lo || x.hi() > hi;
+    }
+    if straddles {
+        Placement::Straddles
+    } else {
+        Placement::Inside
+    }
 }
 
 /// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
@@ -299,4 +345,98 @@ pub fn surface_point<S: crate::surface::Surface>(
     let p = s.jet(&uv[0], &uv[1], 0)[0];
     let b = s.jet(u_box, v_box, 0).swap_remove(0);
     (p, b)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Real;
+
+    fn root(lo: f64, hi: f64, status: Status, max_roots: u32) -> CertifiedRoot {
+        CertifiedRoot {
+            params: vec![(lo + hi) / 2.0],
+            enclosure: vec![Interval::from_bounds(lo, hi)],
+            status,
+            max_roots,
+            bits: 53,
+            perturbation: None,
+            reason: None,
+        }
+    }
+
+    fn line(periodic: bool) -> Unknowns {
+        Unknowns {
+            domain: vec![[0.0, 1.0]],
+            periodic: vec![periodic],
+            rounded: vec![false],
+        }
+    }
+
+    #[test]
+    fn a_singular_box_over_a_simple_one_is_kept_with_its_count() {
+        let u = line(false);
+        let mut roots = vec![root(0.45, 0.55, Status::Verified, 1)];
+        push_unique(&mut roots, root(0.3, 0.7, Status::VerifiedSingular, 2), &u);
+        assert_eq!(roots.len(), 1);
+        assert_eq!(
+            roots[0].max_roots, 2,
+            "the box that may hold two roots stays"
+        );
+        // The other order: the simple root inside the singular box adds nothing.
+        let mut roots = vec![root(0.3, 0.7, Status::VerifiedSingular, 2)];
+        push_unique(&mut roots, root(0.45, 0.55, Status::Verified, 1), &u);
+        assert_eq!((roots.len(), roots[0].max_roots), (1, 2));
+        // A simple root inside a simple box is that root.
+        let mut roots = vec![root(0.3, 0.7, Status::Verified, 1)];
+        push_unique(&mut roots, root(0.45, 0.55, Status::Verified, 1), &u);
+        assert_eq!((roots.len(), roots[0].enclosure[0].lo()), (1, 0.3));
+    }
+
+    #[test]
+    fn placement_against_the_domain() {
+        let search = [[0.0, 1.0]];
+        let at = |lo, hi| vec![Interval::from_bounds(lo, hi)];
+        assert_eq!(
+            placement(&at(0.2, 0.3), &search, &line(false)),
+            Placement::Inside
+        );
+        assert_eq!(
+            placement(&at(0.99, 1.01), &search, &line(false)),
+            Placement::Straddles
+        );
+        assert_eq!(
+            placement(&at(1.1, 1.2), &search, &line(false)),
+            Placement::Outside
+        );
+        assert_eq!(
+            placement(&at(1.1, 1.2), &search, &line(true)),
+            Placement::Inside
+        );
+    }
+
+    /// `(t − 0.5)(t − 1.5) = 0`: one root in the domain [0, 1], one outside.
+    struct Shifted;
+    impl System for Shifted {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            vec![(x[0].clone() - &x[0].lift(0.5)) * &(x[0].clone() - &x[0].lift(1.5))]
+        }
+    }
+
+    #[test]
+    fn a_float_answer_outside_the_domain_is_not_certified_as_an_answer() {
+        // One box: the search cannot finish, so the guesses are certified one by one.
+        let opts = Options {
+            max_boxes: 1,
+            ..Options::default()
+        };
+        let guesses = [vec![0.5], vec![1.5]];
+        let c = certify_roots(&Shifted, &line(false), &guesses, &opts).expect("runs");
+        assert!(!c.complete);
+        assert_eq!(c.value.len(), 1, "{:?}", c.value);
+        assert!(c.value[0].enclosure[0].contains(0.5));
+        assert_eq!(c.value[0].status, Status::Verified);
+    }
 }
