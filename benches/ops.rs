@@ -47,7 +47,11 @@ fn patch() -> NurbsSurface {
         })
         .collect();
     let weights: Vec<Vec<f64>> = (0..n)
-        .map(|i| (0..n).map(|j| 0.7 + 0.9 * (((i * 7 + j * 3) % 5) as f64) / 4.0).collect())
+        .map(|i| {
+            (0..n)
+                .map(|j| 0.7 + 0.9 * (((i * 7 + j * 3) % 5) as f64) / 4.0)
+                .collect()
+        })
         .collect();
     let knots = vec![0.0, 0.0, 0.0, 0.0, 0.3, 0.7, 1.0, 1.0, 1.0, 1.0];
     NurbsSurface::new([3, 3], knots.clone(), knots, &points, Some(&weights)).expect("valid patch")
@@ -106,10 +110,16 @@ fn projections<S: Surface>(c: &mut Criterion, name: &str, s: &S, p: [f64; 3], fe
     // Check what is timed: the float path finds every foot, each certifies, and the
     // complete search proves there are no others.
     assert_eq!(answers(s).len(), feet, "{name}: float feet");
-    let sys = SurfaceFootSystem { surface: s, point: p };
+    let sys = SurfaceFootSystem {
+        surface: s,
+        point: p,
+    };
     assert_eq!(certify_each(&sys, &answers(s), &opts), feet);
     let full = project_point_on_surface(s, &p, &nodes, &precision, &opts).expect("certifies");
-    assert!(full.complete && full.value.len() == feet, "{name}: {full:?}");
+    assert!(
+        full.complete && full.value.len() == feet,
+        "{name}: {full:?}"
+    );
 
     let mut g = c.benchmark_group(format!("project/{name}"));
     g.bench_function("float", |b| b.iter(|| answers(black_box(s))));

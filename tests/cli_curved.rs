@@ -455,3 +455,30 @@ fn projection_onto_a_sphere_is_complete_in_closed_form() {
         "{p}"
     );
 }
+
+#[test]
+fn a_rotated_ellipsoid_is_exact_too() {
+    // Axis (3, 4, 0) (length 5), the semi-axis 5 along it: the poles are (±3, ±4, 0).
+    let e = r#"{"type":"ellipsoid","center":[0,0,0],"a":3,"b":2,"c":5,"axis":[3,4,0]}"#;
+    let r = solve(&[
+        &format!(
+            r#"{{"id":"a","op":"intersect","objects":[{{"type":"line","origin":[0,0,0],"dir":[3,4,0]}},{e}]}}"#
+        ),
+        &format!(
+            r#"{{"id":"b","op":"intersect","objects":[{{"type":"line","origin":[3,4,-10],"dir":[0,0,1]}},{e}]}}"#
+        ),
+    ]);
+    assert_eq!(r[0]["status"], "exact", "{}", r[0]);
+    let ts: Vec<&serde_json::Value> = r[0]["points"]
+        .as_array()
+        .expect("points")
+        .iter()
+        .map(|p| &p["exact"]["params"][0][0])
+        .collect();
+    assert_eq!(ts, vec!["-1", "1"]);
+    // Tangent at the pole (3, 4, 0), along the frame's X = +z.
+    let p = &r[1]["points"][0];
+    assert_eq!(r[1]["status"], "exact");
+    assert_eq!(p["multiplicity"], 2);
+    assert_eq!(p["exact"]["xyz"], serde_json::json!(["3", "4", "0"]));
+}

@@ -867,3 +867,26 @@ proptest! {
         prop_assert_eq!(conic_points(&r.value), want);
     }
 }
+
+#[test]
+fn ellipsoid_in_any_frame_agrees_with_the_orthonormal_one_and_vanishes_on_it() {
+    use geocert::ops::algebraic::QuadricForm;
+    use rug::Rational;
+    let standard = [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    let a = QuadricForm::ellipsoid([1.0, 2.0, 3.0], standard, [3.0, 2.0, 0.5])
+        .expect("valid")
+        .expect("orthonormal");
+    let b =
+        QuadricForm::ellipsoid_in_frame([1.0, 2.0, 3.0], [0.0, 0.0, 7.0], None, [3.0, 2.0, 0.5])
+            .expect("valid");
+    assert_eq!(a, b);
+    // Axis (3, 4, 0), c = 5 along it: (3, 4, 0) lies on the surface; X = +z with a = 3:
+    // (0, 0, 3) too; Y = (−4, 3, 0)/5·... with b = 5: (−4, 3, 0).
+    let e = QuadricForm::ellipsoid_in_frame([0.0; 3], [3.0, 4.0, 0.0], None, [3.0, 5.0, 5.0])
+        .expect("valid");
+    let at = |x: [i32; 3]| e.eval(&x.map(Rational::from));
+    assert_eq!(at([3, 4, 0]), 0);
+    assert_eq!(at([0, 0, 3]), 0);
+    assert_eq!(at([-4, 3, 0]), 0);
+    assert!(at([0, 0, 0]) < 0);
+}

@@ -1,10 +1,10 @@
 //! Curved intersections that are algebraic, decided exactly on the command line
 //! (spec/CERTIFICATION.md `exact`; issue 6: tangential points `exact` where the problem
-//! is algebraic): a `line` or `segment` against a `sphere`, an axis-aligned `ellipsoid`
+//! is algebraic): a `line` or `segment` against a `sphere`, an `ellipsoid` (any frame)
 //! or a ring `torus` (OPERATIONS.md §5.2 with §1.6), and in the plane a `line2` /
 //! `segment2` or a conic against `circle2`, `ellipse2` or `conic2` (§6.3–§6.4), through
 //! [`crate::ops::algebraic`]. Shapes whose implicit form is not rational from the
-//! doubles given (a rotated ellipsoid), that carry a `domain`, or a spindle or horn
+//! doubles given, that carry a `domain`, or a spindle or horn
 //! torus (whose §1.6 domain cuts the implicit surface) go to the numeric certifier.
 //!
 //! The exact solver works on the implicit equations and reports points; the
@@ -165,9 +165,10 @@ fn closed_shape(spec: &SurfaceSpec) -> Option<ClosedShape> {
             Some(ClosedShape::Quadric(q, frame, [s.radius; 3]))
         }
         SurfaceSpec::Ellipsoid(e) if e.domain.is_none() => {
-            let frame = Frame::new(e.center, e.axis.unwrap_or(z), e.reference).ok()?;
-            let axes = frame.axes(&0.0f64);
-            let q = QuadricForm::ellipsoid(e.center, axes, [e.a, e.b, e.c]).ok()??;
+            let axis = e.axis.unwrap_or(z);
+            let frame = Frame::new(e.center, axis, e.reference).ok()?;
+            let q = QuadricForm::ellipsoid_in_frame(e.center, axis, e.reference, [e.a, e.b, e.c])
+                .ok()?;
             Some(ClosedShape::Quadric(q, frame, [e.a, e.b, e.c]))
         }
         SurfaceSpec::Torus(t) if t.domain.is_none() && t.minor < t.major => {

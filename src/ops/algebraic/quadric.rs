@@ -114,8 +114,10 @@ impl<const D: usize> QuadricForm<D> {
         std::array::from_fn(|i| Rational::from(&ax[i] + &self.b[i]))
     }
 
-    /// The form in coordinates `x = p + M y` (`M` given by its columns): the exact
-    /// pull-back of a form written in a local frame.
+    /// The form in coordinates `y = Mᵀ(x − p)` (`M` given by its columns): the exact
+    /// pull-back of a form written in a local frame (for an orthonormal `M`, `x = p + My`;
+    /// columns of any length scale the local coordinates, as
+    /// [`QuadricForm::ellipsoid_in_frame`] uses).
     pub(super) fn in_frame(
         local: &QuadricForm<D>,
         p: &[Rational; D],
@@ -226,6 +228,44 @@ impl QuadricForm<3> {
             inv_sq("radii[2]", radii[2])?,
         ];
         framed(&origin, &frame, diagonal(w, zero(), Rational::from(-1)))
+    }
+
+    /// Ellipsoid `x²/a² + y²/b² + z²/c² = 1` in the CASES.md frame of `axis` and `ref`
+    /// at `origin`, for any axis (§1.6). The frame's unit vectors are irrational in
+    /// general, but only their outer products divided by their squared lengths enter
+    /// the form: with the unnormalised `X̃ = ref − (ref·Z̃/|Z̃|²) Z̃`, `Ỹ = Z̃ × X̃`, `Z̃ = axis`,
+    /// `A = Σ ṽ ṽᵀ / (|ṽ|² r²)` is rational, so the form is exact.
+    pub fn ellipsoid_in_frame(
+        origin: [f64; 3],
+        axis: [f64; 3],
+        reference: Option<[f64; 3]>,
+        radii: [f64; 3],
+    ) -> Result<Self, GeomError> {
+        let p = exact_vec("center", &origin)?;
+        let z = exact_vec("axis", &axis)?;
+        if z.iter().all(|v| v.cmp0() == std::cmp::Ordering::Equal) {
+            return Err(GeomError::ZeroDirection {
+                field: "axis".into(),
+            });
+        }
+        let x = crate::ops::closed_surface::frame_x_unnormalised(&axis, reference.as_ref());
+        if x.iter().all(|v| v.cmp0() == std::cmp::Ordering::Equal) {
+            return Err(GeomError::InvalidValue {
+                field: "ref".into(),
+                reason: "ref is parallel to axis, so it gives no X direction".into(),
+            });
+        }
+        let y: [Rational; 3] = std::array::from_fn(|i| {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            Rational::from(&z[j] * &x[k]) - Rational::from(&z[k] * &x[j])
+        });
+        let names = ["a", "b", "c"];
+        let mut w: [Rational; 3] = std::array::from_fn(|_| Rational::new());
+        for (k, v) in [&x, &y, &z].into_iter().enumerate() {
+            w[k] = inv_sq(names[k], radii[k])? / dot(v, v);
+        }
+        let local = diagonal(w, zero(), Rational::from(-1));
+        Ok(QuadricForm::in_frame(&local, &p, &[x, y, z]))
     }
 
     /// One-sheet hyperboloid `x²/a² + y²/b² − z²/c² = 1` (§1.6).
