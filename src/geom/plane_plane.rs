@@ -424,27 +424,8 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
         round_over(&tm.pnum[1], e_p, &nn)?,
         round_over(&tm.pnum[2], e_p, &nn)?,
     ];
-    let side = |t: &Option<ParamTerms<Dd<M>>>,
-                m: f64,
-                kq: f64,
-                ko: f64|
-     -> Option<Option<ParamLine<Rounded>>> {
-        let Some(t) = t else { return Some(None) };
-        let e_num = bound(EPS_PARAM, &[mp, kq, m, ko, ko]);
-        let e_dir = bound(EPS_PDIR, &[m, ko]);
-        Some(Some(ParamLine {
-            origin: Vector2::new(
-                round_over(&t.num[0], e_num, &nn)?,
-                round_over(&t.num[1], e_num, &nn)?,
-            ),
-            dir: Vector2::new(
-                round_value(&t.dir[0], e_dir)?,
-                round_value(&t.dir[1], e_dir)?,
-            ),
-        }))
-    };
-    let on_a = side(&tm.on_a, ma, ka, kb)?;
-    let on_b = side(&tm.on_b, mb, kb, ka)?;
+    let on_a = param_line(&tm.on_a, &nn, [mp, ma, ka, kb])?;
+    let on_b = param_line(&tm.on_b, &nn, [mp, mb, kb, ka])?;
     Some(PlaneLine {
         point: Vector3::from(point),
         dir: Vector3::new(d0, d1, d2),
@@ -452,6 +433,31 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
         on_a,
         on_b,
     })
+}
+
+/// A plane's parameter line (§8 eq. (8.4)) correctly rounded, `None` when the filter
+/// cannot round it (`Some(None)`: the plane has no parameters). `scales` are
+/// `[m_p, m, k_q, k_o]`: origin scale, this plane's group scale, its degree and the
+/// other plane's.
+#[inline(always)]
+fn param_line<M: ProductMode>(
+    t: &Option<ParamTerms<Dd<M>>>,
+    nn: &Denominator<M>,
+    [mp, m, kq, ko]: [f64; 4],
+) -> Option<Option<ParamLine<Rounded>>> {
+    let Some(t) = t else { return Some(None) };
+    let e_num = bound(EPS_PARAM, &[mp, kq, m, ko, ko]);
+    let e_dir = bound(EPS_PDIR, &[m, ko]);
+    Some(Some(ParamLine {
+        origin: Vector2::new(
+            round_over(&t.num[0], e_num, nn)?,
+            round_over(&t.num[1], e_num, nn)?,
+        ),
+        dir: Vector2::new(
+            round_value(&t.dir[0], e_dir)?,
+            round_value(&t.dir[1], e_dir)?,
+        ),
+    }))
 }
 
 /// The position scale before any origin is seen.
