@@ -393,7 +393,19 @@ fn space_curves_are_proven_apart_or_boxed_where_they_meet() {
         r#"{"id":"miss","op":"intersect","objects":[{"type":"circle","center":[0,0,0],"radius":1,"axis":[0,0,1]},{"type":"circle","center":[0,0,0.001],"radius":1,"axis":[0,0,1]}]}"#,
         r#"{"id":"near","op":"intersect","objects":[{"type":"circle","center":[0,0,0],"radius":1,"axis":[0,0,1]},{"type":"segment","a":[1,0,1e-9],"b":[1,1,1e-9]}]}"#,
         r#"{"id":"helix","op":"intersect","objects":[{"type":"helix","center":[0,0,0],"radius":1,"pitch":1,"axis":[0,0,1],"range":[0,12.566370614359172]},{"type":"line","origin":[0,1,-5],"dir":[0,0,1]}]}"#,
+        // The line meets the circle on its seam (t = 0 = 2π): one place, one box.
+        r#"{"id":"seam","op":"intersect","objects":[{"type":"circle","center":[0,0,0],"radius":1,"axis":[0,0,1]},{"type":"line","origin":[1,0,-1],"dir":[0,0,1]}]}"#,
     ]);
+    let seam = r[3]["points"].as_array().expect("points");
+    assert_eq!(seam.len(), 1, "{}", r[3]);
+    for (b, x) in seam[0]["box"]
+        .as_array()
+        .expect("box")
+        .iter()
+        .zip([1.0, 0.0, 0.0])
+    {
+        assert!(f(&b[0]) <= x && x <= f(&b[1]), "{}", r[3]);
+    }
     // Parallel circles 1e-3 apart and a segment 1e-9 above a circle: proven disjoint.
     for x in &r[..2] {
         assert_eq!(x["status"], "verified", "{x}");

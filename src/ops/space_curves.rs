@@ -85,7 +85,11 @@ pub fn intersect_space_curves<A: Curve<3>, B: Curve<3>>(
         stack.push(first);
         stack.push(second);
     }
-    let mut points: Vec<CertifiedPoint<3>> = clusters(left)
+    let periods = [
+        curve_unknowns(a).periodic[0].then(|| start[0].width()),
+        curve_unknowns(b).periodic[0].then(|| start[1].width()),
+    ];
+    let mut points: Vec<CertifiedPoint<3>> = drop_seam_copies(clusters(left), periods)
         .into_iter()
         .map(|x| candidate(a, b, x))
         .collect();
@@ -135,6 +139,34 @@ fn clusters(mut boxes: Vec<[Interval; 2]>) -> Vec<[Interval; 2]> {
             }
         }
         out.push(x);
+    }
+    out
+}
+
+/// A cluster that, shifted by one period of a closed curve (`periods[i]`, the
+/// parameter range's width, padded by an ulp-sized margin), meets an earlier cluster is
+/// the same place seen across the seam: dropped (both are undecided candidates; the
+/// kept box covers the place up to the period).
+fn drop_seam_copies(boxes: Vec<[Interval; 2]>, periods: [Option<f64>; 2]) -> Vec<[Interval; 2]> {
+    let near = |p: &Interval, q: &Interval, shift: f64| {
+        let pad = 4.0 * f64::EPSILON * shift.abs().max(1.0);
+        p.lo() + shift <= q.hi() + pad && q.lo() <= p.hi() + shift + pad
+    };
+    let mut out: Vec<[Interval; 2]> = Vec::new();
+    for x in boxes {
+        let copy = out.iter().any(|y| {
+            let shifts = |i: usize| -> Vec<f64> {
+                match periods[i] {
+                    Some(p) => vec![0.0, p, -p],
+                    None => vec![0.0],
+                }
+            };
+            let across = |i: usize| shifts(i).into_iter().any(|s| near(&x[i], &y[i], s));
+            (periods[0].is_some() || periods[1].is_some()) && across(0) && across(1)
+        });
+        if !copy {
+            out.push(x);
+        }
     }
     out
 }
