@@ -11,6 +11,7 @@ pub mod filter;
 pub mod interval;
 pub mod interval_like;
 mod limbs;
+pub mod midrad;
 pub mod mpfr_interval;
 pub mod parse;
 pub mod ratio;

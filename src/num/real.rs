@@ -138,6 +138,33 @@ impl Real for f64 {
     }
 }
 
+/// The arithmetic of a polynomial or rational formula, without elementary functions:
+/// what the basis recursions of `surface::basis` need. Every [`Real`] is one (its
+/// constants are [`Real::lift`]); so is [`crate::num::midrad::MidRad`], the cheap
+/// enclosure of the fast surface path.
+pub trait Arith:
+    Clone
+    + Add<Output = Self>
+    + Sub<Output = Self>
+    + Mul<Output = Self>
+    + Div<Output = Self>
+    + Neg<Output = Self>
+    + for<'a> Add<&'a Self, Output = Self>
+    + for<'a> Sub<&'a Self, Output = Self>
+    + for<'a> Mul<&'a Self, Output = Self>
+    + for<'a> Div<&'a Self, Output = Self>
+{
+    /// The exact value `v` in the number system of `self`.
+    fn constant(&self, v: f64) -> Self;
+}
+
+impl<T: Real> Arith for T {
+    #[inline(always)]
+    fn constant(&self, v: f64) -> Self {
+        self.lift(v)
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

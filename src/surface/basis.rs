@@ -1,5 +1,6 @@
 //! Bernstein and B-spline basis functions with their derivatives, generic over
-//! [`Real`] (OPERATIONS.md §1.5 (2.5), (1.11)–(1.12); §1.6 (1.18)).
+//! [`Arith`] (every [`crate::num::Real`], and the midpoint–radius enclosures of the fast
+//! surface path) (OPERATIONS.md §1.5 (2.5), (1.11)–(1.12); §1.6 (1.18)).
 //!
 //! Interval soundness: on one knot span every basis function is a polynomial, and the
 //! recursions below evaluate it (and its derivatives) by enclosing operations, with every
@@ -8,7 +9,7 @@
 //! with [`super::sets::hull`] (see [`spans_touching`]). Outside the domain the first / last
 //! polynomial piece is continued.
 
-use crate::num::Real;
+use crate::num::real::Arith;
 
 /// The values and derivatives of the `degree + 1` basis functions that are non-zero on
 /// one span: `get(k, j)` is the `k`-th derivative of the `j`-th of them (for B-splines,
@@ -43,7 +44,7 @@ fn row(d: usize) -> usize {
 /// `beta(m, j)` the coefficient of the `j`-th function of row `m − 1`
 /// (`β_{i,m} = m/(t_{i+m} − t_i)`, `m` for Bernstein). The rule is applied in place,
 /// from the right, so one buffer serves every step.
-fn derivatives<T: Real>(
+fn derivatives<T: Arith>(
     mut buf: Vec<T>,
     degree: usize,
     order: usize,
@@ -62,7 +63,7 @@ fn derivatives<T: Real>(
             // degree m: c[j] ← β(m, j−1)·c[j−1] − β(m, j)·c[j], from j = m down to 0 (each
             // step reads only entries not yet overwritten; β(m, j) is reused from the
             // step before).
-            buf.push(buf[tail].zero_like());
+            buf.push(buf[tail].constant(0.0));
             let c = &mut buf[tail..];
             let mut beta_j: Option<T> = None;
             for j in (0..=m).rev() {
@@ -82,15 +83,15 @@ fn derivatives<T: Real>(
             }
         }
     }
-    let zero = buf[0].zero_like();
+    let zero = buf[0].constant(0.0);
     buf.resize(tri_len + (order + 1) * (p + 1), zero);
     buf.drain(..tri_len);
     buf
 }
 
 /// The Bernstein polynomials `B_{j,n}(t)` (2.5) and their derivatives up to `order`.
-pub fn bernstein_jet<T: Real>(n: usize, t: &T, order: usize) -> BasisJet<T> {
-    let one = t.one_like();
+pub fn bernstein_jet<T: Arith>(n: usize, t: &T, order: usize) -> BasisJet<T> {
+    let one = t.constant(1.0);
     let s = one.clone() - t;
     let mut tri = Vec::with_capacity(row(n + 1) + (order + 2) * (n + 1));
     tri.push(one);
@@ -109,7 +110,7 @@ pub fn bernstein_jet<T: Real>(n: usize, t: &T, order: usize) -> BasisJet<T> {
             tri.push(v);
         }
     }
-    let values = derivatives(tri, n, order, |m, _| t.lift(m as f64));
+    let values = derivatives(tri, n, order, |m, _| t.constant(m as f64));
     BasisJet { degree: n, values }
 }
 
@@ -118,18 +119,18 @@ pub fn bernstein_jet<T: Real>(n: usize, t: &T, order: usize) -> BasisJet<T> {
 /// derivatives (1.12) up to `order`: the functions `N_{span−p+j, p}`, `j = 0..=p`.
 ///
 /// Every denominator is a difference of two knots around the span, never zero there.
-pub fn bspline_jet<T: Real>(
+pub fn bspline_jet<T: Arith>(
     knots: &[f64],
     p: usize,
     span: usize,
     t: &T,
     order: usize,
 ) -> BasisJet<T> {
-    let knot = |i: usize| t.lift(knots[i]);
+    let knot = |i: usize| t.constant(knots[i]);
     // α_{i,d} = (t − t_i)/(t_{i+d} − t_i) for i = span−d+1 ..= span.
     let alpha = |i: usize, d: usize| (t.clone() - knot(i)) / (knot(i + d) - knot(i));
     let mut tri = Vec::with_capacity(row(p + 1) + (order + 2) * (p + 1));
-    tri.push(t.one_like());
+    tri.push(t.constant(1.0));
     for d in 1..=p {
         let prev = row(d - 1);
         let first = span + 1 - d; // the i of α for j = 1
@@ -140,7 +141,7 @@ pub fn bspline_jet<T: Real>(
             let a = alpha_i.take().map(|al| al * &tri[prev + j - 1]);
             let b = (j < d).then(|| {
                 let al = alpha(first + j, d);
-                let term = (t.one_like() - &al) * &tri[prev + j];
+                let term = (t.constant(1.0) - &al) * &tri[prev + j];
                 alpha_i = Some(al);
                 term
             });
@@ -156,7 +157,7 @@ pub fn bspline_jet<T: Real>(
     // β_{i,m} = m/(t_{i+m} − t_i) for the j-th function of row m − 1, i = span−m+1+j.
     let beta = |m: usize, j: usize| {
         let i = span + 1 + j - m;
-        t.lift(m as f64) / (knot(i + m) - knot(i))
+        t.constant(m as f64) / (knot(i + m) - knot(i))
     };
     let values = derivatives(tri, p, order, beta);
     BasisJet { degree: p, values }

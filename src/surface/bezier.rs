@@ -5,6 +5,7 @@
 use super::basis::bernstein_jet;
 use super::nurbs::validate_net;
 use super::taylor::{centre, is_point, taylor_tensor_jet};
+use super::taylor_fast::{try_centred_jet, BasisSource};
 use super::tensor::{tensor_jet, Net};
 use super::validate::{restrict_domain, Domain};
 use super::Surface;
@@ -69,7 +70,15 @@ impl Surface for BezierSurface {
             let bv = bernstein_jet(pv, v, order);
             return tensor_jet(&self.net, &bu, 0, &bv, 0, order);
         }
-        // An interval box: the centred form (super::taylor).
+        // An interval box: the centred form (super::taylor; f64 intervals take the fast
+        // midpoint–radius evaluation of super::taylor_fast).
+        let (su, sv) = (
+            BasisSource::Bernstein { degree: pu },
+            BasisSource::Bernstein { degree: pv },
+        );
+        if let Some(jet) = try_centred_jet(&self.net, su, u, sv, v, order) {
+            return jet;
+        }
         let ((cu, du, iu), (cv, dv, iv)) = (centre(u), centre(v));
         let bu = bernstein_jet(pu, &cu, pu);
         let bv = bernstein_jet(pv, &cv, pv);

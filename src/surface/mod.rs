@@ -20,6 +20,7 @@ pub mod quadrics;
 mod rotational;
 pub mod sets;
 mod taylor;
+mod taylor_fast;
 mod tensor;
 pub mod torus;
 pub mod validate;

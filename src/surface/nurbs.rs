@@ -12,6 +12,7 @@
 use super::basis::{bspline_jet, spans_touching, BasisJet};
 use super::sets::hull;
 use super::taylor::{centre, is_point, taylor_tensor_jet};
+use super::taylor_fast::{try_centred_jet, BasisSource};
 use super::tensor::{tensor_jet, Net};
 use super::validate::{degree, knot_vector, positive, restrict_domain, Domain};
 use super::Surface;
@@ -178,8 +179,26 @@ impl NurbsSurface {
         let [p, q] = self.degrees;
         let mut result: Option<Vec<[T; 3]>> = None;
         for sv in self.spans(1, v) {
-            let jv = self.basis(1, sv, v, centred.then_some(&cv), order);
+            let mut jv = None;
             for su in self.spans(0, u) {
+                let fast = if centred {
+                    try_centred_jet(
+                        &self.net,
+                        self.source(0, su),
+                        u,
+                        self.source(1, sv),
+                        v,
+                        order,
+                    )
+                } else {
+                    None
+                };
+                if let Some(jet) = fast {
+                    result = Some(join(result, jet));
+                    continue;
+                }
+                let jv =
+                    jv.get_or_insert_with(|| self.basis(1, sv, v, centred.then_some(&cv), order));
                 let ju = self.basis(0, su, u, centred.then_some(&cu), order);
                 let jet = if centred {
                     taylor_tensor_jet(
@@ -187,26 +206,28 @@ impl NurbsSurface {
                         &ju,
                         &du,
                         su - p,
-                        &jv,
+                        jv,
                         &dv,
                         sv - q,
                         order,
                         iu && iv,
                     )
                 } else {
-                    tensor_jet(&self.net, &ju, su - p, &jv, sv - q, order)
+                    tensor_jet(&self.net, &ju, su - p, jv, sv - q, order)
                 };
-                result = Some(match result {
-                    None => jet,
-                    Some(acc) => acc
-                        .iter()
-                        .zip(&jet)
-                        .map(|(a, b)| std::array::from_fn(|c| hull(&a[c], &b[c])))
-                        .collect(),
-                });
+                result = Some(join(result, jet));
             }
         }
         result.expect("at least one span")
+    }
+
+    /// The basis of span `s` in `direction`, for the fast centred form.
+    fn source(&self, direction: usize, s: usize) -> BasisSource<'_> {
+        BasisSource::BSpline {
+            knots: &self.knots[direction],
+            degree: self.degrees[direction],
+            span: s,
+        }
     }
 
     /// The number of control points in `direction`.
@@ -246,6 +267,18 @@ impl NurbsSurface {
             t.bounds(),
         );
         (a..=b).filter(move |&s| a == b || knots[s] < knots[s + 1])
+    }
+}
+
+/// The hull of the jets of the spans seen so far and `jet`.
+fn join<T: Real>(acc: Option<Vec<[T; 3]>>, jet: Vec<[T; 3]>) -> Vec<[T; 3]> {
+    match acc {
+        None => jet,
+        Some(acc) => acc
+            .iter()
+            .zip(&jet)
+            .map(|(a, b)| std::array::from_fn(|c| hull(&a[c], &b[c])))
+            .collect(),
     }
 }
 

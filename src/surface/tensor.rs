@@ -17,6 +17,7 @@
 use super::basis::BasisJet;
 use crate::num::vector::lift;
 use crate::num::Real;
+use std::ops::{Add, Div, Mul, Sub};
 
 /// A control net: `rows × cols` points stored row by row, optional weights.
 #[derive(Debug, Clone, PartialEq)]
@@ -115,7 +116,18 @@ pub(crate) fn tensor_jet<T: Real>(
 }
 
 /// The quotient rule (module doc) on the homogeneous jet `[A | W]`.
-pub(crate) fn quotient<T: Real>(h: &[[T; 4]]) -> Vec<[T; 3]> {
+///
+/// Written against the arithmetic operations only, so that it serves every [`Real`]
+/// and the midpoint–radius enclosures of `super::taylor_fast`
+/// ([`MidRad`](crate::num::midrad::MidRad)).
+pub(crate) fn quotient<T>(h: &[[T; 4]]) -> Vec<[T; 3]>
+where
+    T: Clone
+        + Add<Output = T>
+        + Sub<Output = T>
+        + for<'a> Mul<&'a T, Output = T>
+        + for<'a> Div<&'a T, Output = T>,
+{
     let w = &h[0][3];
     let a = |k: usize| -> [T; 3] { [h[k][0].clone(), h[k][1].clone(), h[k][2].clone()] };
     let wd = |k: usize| &h[k][3];
@@ -130,9 +142,13 @@ pub(crate) fn quotient<T: Real>(h: &[[T; 4]]) -> Vec<[T; 3]> {
             h[2][c].clone() - wd(2).clone() * &s[c]
         }));
         if h.len() >= 6 {
-            let two = w.lift(2.0);
+            // 2·W_u·s_u as a sum (exactly 2·RN(W_u·s_u) in f64, as (2·W_u)·s_u).
+            let twice = |a: &T, b: &T| {
+                let t = a.clone() * b;
+                t.clone() + t
+            };
             let s_uu = div(std::array::from_fn(|c| {
-                h[3][c].clone() - two.clone() * wd(1) * &s_u[c] - wd(3).clone() * &s[c]
+                h[3][c].clone() - twice(wd(1), &s_u[c]) - wd(3).clone() * &s[c]
             }));
             let s_uv = div(std::array::from_fn(|c| {
                 h[4][c].clone()
@@ -141,7 +157,7 @@ pub(crate) fn quotient<T: Real>(h: &[[T; 4]]) -> Vec<[T; 3]> {
                     - wd(4).clone() * &s[c]
             }));
             let s_vv = div(std::array::from_fn(|c| {
-                h[5][c].clone() - two.clone() * wd(2) * &s_v[c] - wd(5).clone() * &s[c]
+                h[5][c].clone() - twice(wd(2), &s_v[c]) - wd(5).clone() * &s[c]
             }));
             out.extend([s_u, s_v, s_uu, s_uv, s_vv]);
         } else {
