@@ -278,7 +278,7 @@ fn exact_out<const D: usize>(
 ) -> Option<ExactOut> {
     let t = t.exact()?;
     let xyz = (0..D)
-        .map(|i| Rational::from(&line.o[i] + Rational::from(&line.d[i] * t)).to_string())
+        .map(|i| (&line.o[i] + Rational::from(&line.d[i] * t)).to_string())
         .collect();
     let params = if line_first {
         vec![vec![t.to_string()], vec![]]

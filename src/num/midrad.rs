@@ -29,15 +29,15 @@ use super::Interval;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
 /// The smallest positive subnormal, `η = 2⁻¹⁰⁷⁴`.
-pub const ETA: f64 = f64::from_bits(1);
+pub const ETA: f64 = 5e-324;
 /// `2⁻⁵²`.
 pub const EPS: f64 = f64::EPSILON;
 /// `2⁻⁵³`, the unit roundoff of RN.
 pub const U: f64 = f64::EPSILON / 2.0;
 /// `1 + 2⁻⁴⁵`.
-const ONE_PLUS: f64 = f64::from_bits(0x3FF0_0000_0000_0080);
+const ONE_PLUS: f64 = 1.0 + 1.0 / (1u64 << 45) as f64;
 /// `2⁻¹⁰⁶⁰` (subnormal: `2¹⁴ η`).
-const TINY: f64 = f64::from_bits(1 << 14);
+const TINY: f64 = ETA * 16384.0;
 
 /// An upper bound of every real whose round-to-nearest is `x ≥ 0` (module doc).
 #[inline(always)]
@@ -116,27 +116,28 @@ impl Sub for MidRad {
     }
 }
 
-impl Mul<&MidRad> for MidRad {
+impl Mul for MidRad {
     type Output = MidRad;
     /// `|xy − m| ≤ |m_x| r_y + r_x |m_y| + r_x r_y + u|m| + η`.
     #[inline(always)]
-    fn mul(self, y: &MidRad) -> MidRad {
+    fn mul(self, y: MidRad) -> MidRad {
         let mid = self.mid * y.mid;
         let rad = self.mid.abs() * y.rad + self.rad * y.mid.abs() + self.rad * y.rad;
         MidRad::new(mid, inflate(rad + U * mid.abs() + ETA))
     }
 }
 
-impl Div<&MidRad> for MidRad {
+impl Div for MidRad {
     type Output = MidRad;
     /// For `y` bounded away from 0 above (`m_y − r_y > 0`): `x/y − m_x/m_y =
     /// ((x − m_x) m_y − m_x (y − m_y))/(y m_y)`, so `|x/y − m| ≤ (r_x + |m_x/m_y| r_y)/(m_y −
     /// r_y) + u|m| + η`, with `|m_x/m_y| ≤ up(|m|)` and the denominator rounded down.
     /// A divisor that may be ≤ 0 gives "unknown".
     #[inline(always)]
-    fn div(self, y: &MidRad) -> MidRad {
+    fn div(self, y: MidRad) -> MidRad {
         let mid = self.mid / y.mid;
         let den = down(y.mid - y.rad);
+        #[allow(clippy::neg_cmp_op_on_partial_ord)] // NaN is "unknown" too
         if !(den > 0.0) {
             return MidRad::new(f64::NAN, f64::INFINITY);
         }
@@ -182,18 +183,18 @@ impl Sub<&MidRad> for MidRad {
         self - *y
     }
 }
-impl Mul for MidRad {
+impl Mul<&MidRad> for MidRad {
     type Output = MidRad;
     #[inline(always)]
-    fn mul(self, y: MidRad) -> MidRad {
-        self * &y
+    fn mul(self, y: &MidRad) -> MidRad {
+        self * *y
     }
 }
-impl Div for MidRad {
+impl Div<&MidRad> for MidRad {
     type Output = MidRad;
     #[inline(always)]
-    fn div(self, y: MidRad) -> MidRad {
-        self / &y
+    fn div(self, y: &MidRad) -> MidRad {
+        self / *y
     }
 }
 
@@ -216,8 +217,16 @@ mod tests {
 
     /// `[m − r, m + r] ∋ q`, decided exactly.
     fn encloses(x: MidRad, q: &Rational) -> bool {
-        let d = Rational::from(q - exact(x.mid)).abs();
+        let d = (q - exact(x.mid)).abs();
         d <= exact(x.rad)
+    }
+
+    #[test]
+    fn constants_are_the_intended_powers_of_two() {
+        assert_eq!(ETA.to_bits(), 1);
+        assert_eq!(TINY.to_bits(), 1 << 14);
+        assert_eq!(ONE_PLUS.to_bits(), 0x3FF0_0000_0000_0080);
+        assert_eq!(U, 2f64.powi(-53));
     }
 
     #[test]
@@ -283,15 +292,15 @@ mod tests {
                     let (qx, qy) = (ex(x, sx), ex(y, sy));
                     assert!(encloses(x + y, &Rational::from(&qx + &qy)));
                     assert!(encloses(x - y, &Rational::from(&qx - &qy)));
-                    assert!(encloses(x * &y, &Rational::from(&qx * &qy)));
+                    assert!(encloses(x * y, &Rational::from(&qx * &qy)));
                     if y.mid > 0.0 {
-                        assert!(encloses(x / &y, &Rational::from(&qx / &qy)));
+                        assert!(encloses(x / y, &Rational::from(&qx / &qy)));
                     }
                 }
             }
         }
         // A divisor interval containing 0 is unknown.
-        let bad = MidRad::new(1.0, 1.0) / &MidRad::new(0.5, 0.5);
+        let bad = MidRad::new(1.0, 1.0) / MidRad::new(0.5, 0.5);
         assert!(!bad.is_finite());
     }
 

@@ -135,24 +135,6 @@ pub fn classify_point_closed_surface(p: &[f64; 3], surface: &ClosedSurface) -> C
     Certified::exact(side, Arithmetic::Rational, bits)
 }
 
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn the_default_frame_x_is_orthogonal_to_the_axis() {
-        let axis = [1.0, 2.0, 0.5];
-        let x = frame_x_unnormalised(&axis, None);
-        assert_eq!(dot3(&x, &qv(&axis)), Rational::new());
-        // e = +z (|0.5| is the smallest component).
-        assert_eq!(x[2].clone().cmp0(), Ordering::Greater);
-        assert_eq!(
-            frame_x_unnormalised(&[0.0, 0.0, 2.0], None),
-            qv(&[1.0, 0.0, 0.0])
-        );
-    }
-}
-
 /// The feet of `p` on the sphere `|x − c| = r` (§3.4 in closed form): the critical
 /// points of `|p − x|²` on the sphere are where `p − x` is normal, `x = c ± r·e` with
 /// `e = (p − c)/|p − c|` — the nearest (`+`, at distance `| |p − c| − r |`) and the
@@ -176,4 +158,22 @@ pub fn sphere_feet(
         std::array::from_fn(|i| Interval::point(center[i]) + d[i] * r * Interval::point(sign) / len)
     };
     Some([(foot(1.0), (len - r).abs()), (foot(-1.0), len + r)])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_default_frame_x_is_orthogonal_to_the_axis() {
+        let axis = [1.0, 2.0, 0.5];
+        let x = frame_x_unnormalised(&axis, None);
+        assert_eq!(dot3(&x, &qv(&axis)), Rational::new());
+        // e = +z (|0.5| is the smallest component).
+        assert_eq!(x[2].clone().cmp0(), Ordering::Greater);
+        assert_eq!(
+            frame_x_unnormalised(&[0.0, 0.0, 2.0], None),
+            qv(&[1.0, 0.0, 0.0])
+        );
+    }
 }

@@ -151,7 +151,10 @@ fn decide<const D: usize>(
     let rest: Vec<Interval> = it.map(|c| c.1).collect();
     let reason = if !feet.complete {
         Some("the feet are not complete, so a nearer one may exist".to_string())
-    } else if rest.iter().any(|d| !(distance.hi() < d.lo())) {
+    } else if rest
+        .iter()
+        .any(|d| distance.hi() >= d.lo() || distance.hi().is_nan())
+    {
         Some("two candidates are not separated by their distance enclosures".to_string())
     } else if !boundary_farther(distance.hi()) {
         Some("the domain boundary is not proven farther than the nearest foot".to_string())

@@ -69,7 +69,7 @@ fn basis(b: &BasisJet<MidRad>) -> Option<Basis> {
             let x = if k < 2 {
                 *b.get(k, j)
             } else {
-                *b.get(k, j) / &MidRad::new(factorial, 0.0)
+                *b.get(k, j) / MidRad::new(factorial, 0.0)
             };
             if !x.is_finite() {
                 return None;
@@ -235,7 +235,7 @@ fn rational_jet(
         let (du, dv) = (MidRad::new(0.0, spans.r_u), MidRad::new(0.0, spans.r_v));
         for (e, eu, ev) in [(1, 3, 4), (2, 4, 5), (0, 1, 2)] {
             for c in 0..3 {
-                let form = centre[e][c] + jet_mr[eu][c] * &du + jet_mr[ev][c] * &dv;
+                let form = centre[e][c] + jet_mr[eu][c] * du + jet_mr[ev][c] * dv;
                 let met = jet[e][c].intersection(&form.to_interval()?);
                 jet[e][c] = met;
                 jet_mr[e][c] = MidRad::from_interval(&met);
@@ -258,11 +258,11 @@ fn intervals<const D: usize>(e: &[MidRad; D]) -> Option<[Interval; 3]> {
 /// `s = (s − P_ref) + P_ref`.
 fn untranslate(jet: &mut [[Interval; 3]], reference: &[f64; 3]) {
     for c in 0..3 {
-        jet[0][c] = jet[0][c] + Interval::point(reference[c]);
+        jet[0][c] += Interval::point(reference[c]);
     }
 }
 
-#[allow(clippy::too_many_arguments, clippy::type_complexity)]
+#[allow(clippy::type_complexity, clippy::needless_range_loop)]
 fn centred_f64<const D: usize>(
     net: &Net,
     spans: &Spans,
