@@ -221,7 +221,7 @@ fn centred_homogeneous<T: Real, const D: usize>(
 /// ([`super::sets::meet`]).
 ///
 /// Callers try the midpoint–radius evaluation of [`super::taylor_fast`] first (f64
-/// intervals: the same identities at about a tenth of the cost); this generic code
+/// intervals: the same identities at about a sixth of the cost); this generic code
 /// serves the other number types and the boxes it declines.
 #[allow(clippy::too_many_arguments)]
 pub(crate) fn taylor_tensor_jet<T: Real>(

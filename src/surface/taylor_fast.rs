@@ -6,7 +6,7 @@
 //! product of length `n` has error at most `γ_n Σ|x_i y_i|`, `γ_n = nu/(1 − nu) ≤
 //! (n+1)u`, plus `n·η` for underflow, `η = 2⁻¹⁰⁷⁴`). Issue 5's enclosure goal needs
 //! this: the generic interval evaluation branches on signs and rounds each product by
-//! error-free transformations, about 60× one f64 jet; this path is about 5×.
+//! error-free transformations, about 60× one f64 jet; this path is 8–10× (BENCHMARKS.md).
 //!
 //! It encloses the same identity as the generic code (the formula in `super::taylor`),
 //! not an approximation of it; the two are compared in the tests below and every
