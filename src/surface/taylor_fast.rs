@@ -21,6 +21,7 @@
 
 use super::basis::{bernstein_jet, bspline_jet, BasisJet};
 use super::tensor::{quotient, Net, ORDERS};
+use crate::certify::guarded::Guarded;
 use crate::num::midrad::{inflate, up, MidRad, EPS, ETA, U};
 use crate::num::{Interval, Real};
 use std::any::Any;
@@ -155,8 +156,14 @@ fn centre(t: &Interval) -> Option<(f64, f64, bool)> {
 }
 
 /// The centred form of [`super::taylor::taylor_tensor_jet`] over the box `u × v` on one
-/// pair of spans, for `T = Interval`, in midpoint–radius form; `None` for any other
-/// number type, or when the fast path declines (module doc).
+/// pair of spans, for `T = Interval` and for the certifier's `Guarded<Interval>`, in
+/// midpoint–radius form; `None` for any other number type, or when the fast path
+/// declines (module doc).
+///
+/// `Guarded` (smoothness-tracking) values: on one pair of spans the patch is a
+/// polynomial, or a quotient whose denominator the fast path has proven positive over
+/// the box, so it is `C^∞` there and the jet is smooth exactly when both parameters are
+/// (the hull over several spans is marked non-smooth by the caller's join).
 pub(crate) fn try_centred_jet<T: Real>(
     net: &Net,
     source_u: BasisSource,
@@ -165,8 +172,36 @@ pub(crate) fn try_centred_jet<T: Real>(
     v: &T,
     order: usize,
 ) -> Option<Vec<[T; 3]>> {
-    let u = (u as &dyn Any).downcast_ref::<Interval>()?;
-    let v = (v as &dyn Any).downcast_ref::<Interval>()?;
+    let (u, v) = (u as &dyn Any, v as &dyn Any);
+    let out: Box<dyn Any> =
+        if let (Some(u), Some(v)) = (u.downcast_ref::<Interval>(), v.downcast_ref::<Interval>()) {
+            Box::new(interval_jet(net, source_u, u, source_v, v, order)?)
+        } else {
+            let u = u.downcast_ref::<Guarded<Interval>>()?;
+            let v = v.downcast_ref::<Guarded<Interval>>()?;
+            let jet = interval_jet(net, source_u, &u.value, source_v, &v.value, order)?;
+            let smooth = u.smooth && v.smooth;
+            let guard = |value: Interval| Guarded {
+                value,
+                smooth: smooth && !value.is_empty(),
+            };
+            Box::new(
+                jet.into_iter()
+                    .map(|e| e.map(guard))
+                    .collect::<Vec<[Guarded<Interval>; 3]>>(),
+            )
+        };
+    out.downcast().ok().map(|b| *b)
+}
+
+fn interval_jet(
+    net: &Net,
+    source_u: BasisSource,
+    u: &Interval,
+    source_v: BasisSource,
+    v: &Interval,
+    order: usize,
+) -> Option<Vec<[Interval; 3]>> {
     let ((mu, r_u, inside_u), (mv, r_v, inside_v)) = (centre(u)?, centre(v)?);
     let spans = Spans {
         a: basis(&source_u.at(mu))?,
@@ -176,12 +211,10 @@ pub(crate) fn try_centred_jet<T: Real>(
         first_v: source_v.first(),
         r_v,
     };
-    let jet = match net.weights {
-        None => polynomial_jet(net, &spans, order)?,
-        Some(_) => rational_jet(net, &spans, order, inside_u && inside_v)?,
-    };
-    let boxed: Box<dyn Any> = Box::new(jet);
-    boxed.downcast().ok().map(|b| *b)
+    match net.weights {
+        None => polynomial_jet(net, &spans, order),
+        Some(_) => rational_jet(net, &spans, order, inside_u && inside_v),
+    }
 }
 
 /// The basis Taylor coefficients at the centres, the first control point of each

@@ -291,6 +291,17 @@ impl<S: Surface, C: Curve<3>> System for CurveSurfaceSystem<'_, S, C> {
             .0
             .to_vec()
     }
+    /// The Jacobian `[s_u | s_v | −c']` of (5.2) from the jets (one surface jet of
+    /// order 1 instead of a jet over dual numbers, which for interval boxes takes the
+    /// fast centred form of the patch).
+    fn eval_with_jacobian<T: Real>(&self, x: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
+        let x = [x[0].clone(), x[1].clone(), x[2].clone()];
+        let (f, j) = curve_surface_equations(self.surface, self.curve, &x, true);
+        // `j` is always present when requested; an empty Jacobian would fail the
+        // certifier's shape check (inconclusive), never panic.
+        let j = j.map_or_else(Vec::new, |j| j.iter().map(|r| r.to_vec()).collect());
+        (f.to_vec(), j)
+    }
 }
 
 /// All intersection points of `curve` and `surface` (§5.2), certified: transversal

@@ -294,6 +294,17 @@ impl<S: Surface> System for SurfaceFootSystem<'_, S> {
             .0
             .to_vec()
     }
+    /// The Jacobian of (3.9) from the surface's own second derivatives (one jet of
+    /// order 2 instead of a jet over dual numbers, which for interval boxes takes the
+    /// fast centred form of the patch).
+    fn eval_with_jacobian<T: Real>(&self, x: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
+        let p = lift(&x[0], &self.point);
+        let (f, j) = surface_foot_equations(self.surface, &p, &x[0], &x[1], true);
+        // `j` is always present when requested; an empty Jacobian would fail the
+        // certifier's shape check (inconclusive), never panic.
+        let j = j.map_or_else(Vec::new, |j| j.iter().map(|r| r.to_vec()).collect());
+        (f.to_vec(), j)
+    }
 }
 
 /// All feet from `p` onto `surface` (§3.4), certified like
