@@ -1,4 +1,5 @@
-//! The surface systems' explicit Jacobians (`eval_with_jacobian` from the surface's own
+//! The surface systems' explicit Jacobians (feet (3.9), curve ∩ surface (5.2), three
+//! surfaces (7.3)) (`eval_with_jacobian` from the surface's own
 //! derivatives, which for interval boxes run through the fast centred form of the
 //! patch) enclose the derivatives the dual-number evaluation computes: over random
 //! boxes of a rational NURBS patch, the f64-interval Jacobian of the box contains the
@@ -14,6 +15,7 @@ use geocert::certify::System;
 use geocert::curve::lines::Segment;
 use geocert::num::{Interval, MpfrInterval};
 use geocert::ops::intersect::curve_surface::CurveSurfaceSystem;
+use geocert::ops::intersect::three_surfaces::ThreeSurfaceSystem;
 use geocert::ops::project::surface::SurfaceFootSystem;
 use geocert::surface::Surface;
 use surface_support::{nurbs_bicubic, Rng};
@@ -71,10 +73,16 @@ fn explicit_jacobians_enclose_the_dual_ones() {
         surface: &s,
         curve: &segment,
     };
+    let three = ThreeSurfaceSystem {
+        r: &s,
+        s: &s,
+        q: &s,
+    };
     let mut rng = Rng(99);
     for w in [0.05, 1e-3, 1e-7] {
         check("foot", &foot, 0, w, &mut rng);
         check("curve-surface", &crossing, 1, w, &mut rng);
+        check("three surfaces", &three, 4, w, &mut rng);
     }
 }
 

@@ -37,6 +37,17 @@ pub trait System {
     }
 }
 
+/// `(F, J)` from fixed-size arrays, for `eval_with_jacobian` overrides that evaluate an
+/// explicit Jacobian formula; a missing Jacobian gives no rows (the certifier's shape
+/// check then makes the box inconclusive).
+pub fn value_and_rows<T, const N: usize>(
+    f: [T; N],
+    j: Option<[[T; N]; N]>,
+) -> (Vec<T>, Vec<Vec<T>>) {
+    let rows = j.map_or_else(Vec::new, |j| j.into_iter().map(Vec::from).collect());
+    (Vec::from(f), rows)
+}
+
 /// Check a system's size and that it returns `dim()` values and a `dim()`×`dim()`
 /// Jacobian at the point `at` (typed errors naming `system`).
 pub fn check_system<S: System>(sys: &S, at: &[f64]) -> Result<usize, GeomError> {

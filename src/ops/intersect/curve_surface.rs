@@ -6,6 +6,7 @@
 //! tangent plane the tangency system (5.5)/(5.6) takes over and its solutions are
 //! verified (`|d| ≤ δ_len`) and classified (`Tangent` when `|N̂·ĉ'| < δ_tan`).
 
+use crate::certify::system::value_and_rows;
 use crate::certify::System;
 use crate::curve::Curve;
 use crate::num::vector::{cross, dot, norm_f64, sub};
@@ -297,10 +298,7 @@ impl<S: Surface, C: Curve<3>> System for CurveSurfaceSystem<'_, S, C> {
     fn eval_with_jacobian<T: Real>(&self, x: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
         let x = [x[0].clone(), x[1].clone(), x[2].clone()];
         let (f, j) = curve_surface_equations(self.surface, self.curve, &x, true);
-        // `j` is always present when requested; an empty Jacobian would fail the
-        // certifier's shape check (inconclusive), never panic.
-        let j = j.map_or_else(Vec::new, |j| j.iter().map(|r| r.to_vec()).collect());
-        (f.to_vec(), j)
+        value_and_rows(f, j)
     }
 }
 

@@ -10,6 +10,7 @@
 //! (7.3) with the Jacobian (7.4); solutions are verified (`|r − q|, |s − q| ≤ δ_len`)
 //! and merged (§0.4).
 
+use crate::certify::system::value_and_rows;
 use crate::certify::System;
 use crate::num::vector::{cross, dot, norm_f64, sub};
 use crate::num::Real;
@@ -292,6 +293,14 @@ impl<R: Surface, S: Surface, Q: Surface> System for ThreeSurfaceSystem<'_, R, S,
         three_surface_equations(self.r, self.s, self.q, &x, false)
             .0
             .to_vec()
+    }
+    /// The Jacobian (7.4) from the surfaces' own first derivatives (one jet of order 1
+    /// each instead of jets over dual numbers; interval boxes of patches take the fast
+    /// centred form).
+    fn eval_with_jacobian<T: Real>(&self, x: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
+        let x: [T; 6] = std::array::from_fn(|i| x[i].clone());
+        let (f, j) = three_surface_equations(self.r, self.s, self.q, &x, true);
+        value_and_rows(f, j)
     }
 }
 

@@ -8,6 +8,7 @@
 //! "Nearest", exact mode).
 
 use super::curve::{changes_sign, project_point_on_curve_f64, CurveFeet};
+use crate::certify::system::value_and_rows;
 use crate::certify::System;
 use crate::curve::Curve;
 use crate::num::vector::{dot, lift, norm_f64, sub};
@@ -300,10 +301,7 @@ impl<S: Surface> System for SurfaceFootSystem<'_, S> {
     fn eval_with_jacobian<T: Real>(&self, x: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
         let p = lift(&x[0], &self.point);
         let (f, j) = surface_foot_equations(self.surface, &p, &x[0], &x[1], true);
-        // `j` is always present when requested; an empty Jacobian would fail the
-        // certifier's shape check (inconclusive), never panic.
-        let j = j.map_or_else(Vec::new, |j| j.iter().map(|r| r.to_vec()).collect());
-        (f.to_vec(), j)
+        value_and_rows(f, j)
     }
 }
 
