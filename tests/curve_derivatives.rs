@@ -8,7 +8,7 @@ mod curve_support;
 
 use curve_support::*;
 use geocert::curve::Curve;
-use geocert::num::{IntervalLike, MpfrInterval, Real};
+use geocert::num::{Arith, IntervalLike, MpfrInterval};
 use rug::Float;
 
 const SAMPLES: usize = 40;

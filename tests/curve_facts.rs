@@ -12,7 +12,7 @@ use geocert::curve::{
     conic_arc, Analytic, Analytic2, AnyCurve3, Bezier, Conic2, ConicKind, Curve, Frame, Line,
     NurbsCurve, PlaneCurve, Reparametrised, Segment, Shape, SpaceCurve, StepHint,
 };
-use geocert::num::{IntervalLike, MpfrInterval, Real};
+use geocert::num::{Arith, IntervalLike, MpfrInterval, Real};
 use geocert::surface::Implicit;
 use std::f64::consts::{FRAC_1_SQRT_2, PI, TAU};
 

@@ -11,7 +11,7 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use crate::num::Real;
+use crate::num::{Arith, Real};
 
 /// A number with its gradient with respect to the seeded variables.
 #[derive(Clone, Debug, PartialEq)]
@@ -161,10 +161,13 @@ impl<T: Real> Neg for Dual<T> {
     }
 }
 
-impl<T: Real> Real for Dual<T> {
+impl<T: Real> Arith for Dual<T> {
     fn lift(&self, v: f64) -> Self {
         Dual::constant(self.value.lift(v))
     }
+}
+
+impl<T: Real> Real for Dual<T> {
     fn pi_like(&self) -> Self {
         Dual::constant(self.value.pi_like())
     }

@@ -18,7 +18,7 @@
 
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-use crate::num::{IntervalLike, Real};
+use crate::num::{Arith, IntervalLike, Real};
 
 /// An interval value and whether it was computed by smooth operations only (module doc).
 #[derive(Clone, Debug, PartialEq)]
@@ -97,10 +97,13 @@ impl<I: IntervalLike> Neg for Guarded<I> {
     }
 }
 
-impl<I: IntervalLike> Real for Guarded<I> {
+impl<I: IntervalLike> Arith for Guarded<I> {
     fn lift(&self, v: f64) -> Self {
         Guarded::new(self.value.lift(v))
     }
+}
+
+impl<I: IntervalLike> Real for Guarded<I> {
     fn pi_like(&self) -> Self {
         Guarded::new(self.value.pi_like())
     }

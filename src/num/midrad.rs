@@ -201,7 +201,7 @@ impl Div<&MidRad> for MidRad {
 impl Arith for MidRad {
     /// `⟨v, 0⟩` (exact).
     #[inline(always)]
-    fn constant(&self, v: f64) -> MidRad {
+    fn lift(&self, v: f64) -> MidRad {
         MidRad::new(v, 0.0)
     }
 }

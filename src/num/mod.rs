@@ -23,5 +23,5 @@ pub mod vector;
 pub use interval::Interval;
 pub use interval_like::IntervalLike;
 pub use mpfr_interval::MpfrInterval;
-pub use real::Real;
+pub use real::{Arith, Real};
 pub use round::Rounded;

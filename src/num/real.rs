@@ -11,20 +11,18 @@
 //! certification code checks [`crate::num::IntervalLike::is_empty`] before concluding
 //! anything from an inclusion (see [`crate::num::interval`] "Domain and emptiness").
 //!
-//! Constants enter a formula through [`Real::lift`], which produces the exact value in
+//! Constants enter a formula through [`Arith::lift`] (the arithmetic supertrait of [`Real`]), which produces the exact value in
 //! the number system (and precision) of an existing number, so MPFR intervals keep
 //! their precision through a generic formula without a global context.
 
 use std::fmt::Debug;
 use std::ops::{Add, Div, Mul, Neg, Sub};
 
-/// A number type a formula can be evaluated in: `f64`, [`crate::num::Interval`] or
-/// [`crate::num::MpfrInterval`].
-pub trait Real:
+/// The arithmetic of a polynomial or rational formula, without elementary functions:
+/// what the basis recursions of `surface::basis` need. Every [`Real`] is one; so is
+/// [`crate::num::midrad::MidRad`], the cheap enclosure of the fast surface path.
+pub trait Arith:
     Clone
-    + Debug
-    + PartialEq
-    + 'static
     + Add<Output = Self>
     + Sub<Output = Self>
     + Mul<Output = Self>
@@ -37,6 +35,11 @@ pub trait Real:
 {
     /// The exact value `v` in the same number system and precision as `self`.
     fn lift(&self, v: f64) -> Self;
+}
+
+/// A number type a formula can be evaluated in: `f64`, [`crate::num::Interval`] or
+/// [`crate::num::MpfrInterval`].
+pub trait Real: Arith + Debug + PartialEq + 'static {
     /// π (an enclosure of it for interval types).
     fn pi_like(&self) -> Self;
     /// `self²` (tighter than `self * self` for intervals that contain 0).
@@ -84,10 +87,13 @@ pub trait Real:
     fn restrict_to(&self, lo: f64, hi: f64) -> Self;
 }
 
-impl Real for f64 {
+impl Arith for f64 {
     fn lift(&self, v: f64) -> Self {
         v
     }
+}
+
+impl Real for f64 {
     fn pi_like(&self) -> Self {
         std::f64::consts::PI
     }
@@ -135,33 +141,6 @@ impl Real for f64 {
     }
     fn restrict_to(&self, lo: f64, hi: f64) -> Self {
         self.max(lo).min(hi)
-    }
-}
-
-/// The arithmetic of a polynomial or rational formula, without elementary functions:
-/// what the basis recursions of `surface::basis` need. Every [`Real`] is one (its
-/// constants are [`Real::lift`]); so is [`crate::num::midrad::MidRad`], the cheap
-/// enclosure of the fast surface path.
-pub trait Arith:
-    Clone
-    + Add<Output = Self>
-    + Sub<Output = Self>
-    + Mul<Output = Self>
-    + Div<Output = Self>
-    + Neg<Output = Self>
-    + for<'a> Add<&'a Self, Output = Self>
-    + for<'a> Sub<&'a Self, Output = Self>
-    + for<'a> Mul<&'a Self, Output = Self>
-    + for<'a> Div<&'a Self, Output = Self>
-{
-    /// The exact value `v` in the number system of `self`.
-    fn constant(&self, v: f64) -> Self;
-}
-
-impl<T: Real> Arith for T {
-    #[inline(always)]
-    fn constant(&self, v: f64) -> Self {
-        self.lift(v)
     }
 }
 

@@ -63,7 +63,7 @@ fn derivatives<T: Arith>(
             // degree m: c[j] ← β(m, j−1)·c[j−1] − β(m, j)·c[j], from j = m down to 0 (each
             // step reads only entries not yet overwritten; β(m, j) is reused from the
             // step before).
-            buf.push(buf[tail].constant(0.0));
+            buf.push(buf[tail].lift(0.0));
             let c = &mut buf[tail..];
             let mut beta_j: Option<T> = None;
             for j in (0..=m).rev() {
@@ -83,7 +83,7 @@ fn derivatives<T: Arith>(
             }
         }
     }
-    let zero = buf[0].constant(0.0);
+    let zero = buf[0].lift(0.0);
     buf.resize(tri_len + (order + 1) * (p + 1), zero);
     buf.drain(..tri_len);
     buf
@@ -91,7 +91,7 @@ fn derivatives<T: Arith>(
 
 /// The Bernstein polynomials `B_{j,n}(t)` (2.5) and their derivatives up to `order`.
 pub fn bernstein_jet<T: Arith>(n: usize, t: &T, order: usize) -> BasisJet<T> {
-    let one = t.constant(1.0);
+    let one = t.lift(1.0);
     let s = one.clone() - t;
     let mut tri = Vec::with_capacity(row(n + 1) + (order + 2) * (n + 1));
     tri.push(one);
@@ -110,7 +110,7 @@ pub fn bernstein_jet<T: Arith>(n: usize, t: &T, order: usize) -> BasisJet<T> {
             tri.push(v);
         }
     }
-    let values = derivatives(tri, n, order, |m, _| t.constant(m as f64));
+    let values = derivatives(tri, n, order, |m, _| t.lift(m as f64));
     BasisJet { degree: n, values }
 }
 
@@ -126,11 +126,11 @@ pub fn bspline_jet<T: Arith>(
     t: &T,
     order: usize,
 ) -> BasisJet<T> {
-    let knot = |i: usize| t.constant(knots[i]);
+    let knot = |i: usize| t.lift(knots[i]);
     // α_{i,d} = (t − t_i)/(t_{i+d} − t_i) for i = span−d+1 ..= span.
     let alpha = |i: usize, d: usize| (t.clone() - knot(i)) / (knot(i + d) - knot(i));
     let mut tri = Vec::with_capacity(row(p + 1) + (order + 2) * (p + 1));
-    tri.push(t.constant(1.0));
+    tri.push(t.lift(1.0));
     for d in 1..=p {
         let prev = row(d - 1);
         let first = span + 1 - d; // the i of α for j = 1
@@ -141,7 +141,7 @@ pub fn bspline_jet<T: Arith>(
             let a = alpha_i.take().map(|al| al * &tri[prev + j - 1]);
             let b = (j < d).then(|| {
                 let al = alpha(first + j, d);
-                let term = (t.constant(1.0) - &al) * &tri[prev + j];
+                let term = (t.lift(1.0) - &al) * &tri[prev + j];
                 alpha_i = Some(al);
                 term
             });
@@ -157,7 +157,7 @@ pub fn bspline_jet<T: Arith>(
     // β_{i,m} = m/(t_{i+m} − t_i) for the j-th function of row m − 1, i = span−m+1+j.
     let beta = |m: usize, j: usize| {
         let i = span + 1 + j - m;
-        t.constant(m as f64) / (knot(i + m) - knot(i))
+        t.lift(m as f64) / (knot(i + m) - knot(i))
     };
     let values = derivatives(tri, p, order, beta);
     BasisJet { degree: p, values }

@@ -4,15 +4,19 @@
 use super::mpfr_eval::{PI_DOWN, PI_UP};
 use super::Interval;
 use crate::num::interval::ops::forward_to_inherent;
+use crate::num::real::Arith;
 use crate::num::{IntervalLike, Real};
 
-impl Real for Interval {
-    forward_to_inherent!(Interval; unary: sqr, sqrt, sin, cos, tan, exp, ln, sinh, cosh;
-        binary: atan2 -> Self; predicates: );
+impl Arith for Interval {
     /// The point interval `[v, v]` (exact).
     fn lift(&self, v: f64) -> Self {
         Interval::point(v)
     }
+}
+
+impl Real for Interval {
+    forward_to_inherent!(Interval; unary: sqr, sqrt, sin, cos, tan, exp, ln, sinh, cosh;
+        binary: atan2 -> Self; predicates: );
     /// `[π↓, π↑]`, one ulp wide.
     fn pi_like(&self) -> Self {
         Interval::from_neg_lo_hi(-PI_DOWN, PI_UP)

@@ -19,7 +19,7 @@
 //! would; [`MpfrInterval::to_interval`] rounds outward to doubles.
 //!
 //! Precision: binary operations return the larger precision of their operands;
-//! constants from [`crate::num::Real::lift`] take the precision of their template, and
+//! constants from [`crate::num::Arith::lift`] take the precision of their template, and
 //! the context-free `Zero`/`One` of `num_traits` (nalgebra) are exact at 53 bits.
 
 mod arith;

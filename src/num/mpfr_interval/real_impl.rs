@@ -6,6 +6,7 @@ use rug::Float;
 
 use super::MpfrInterval;
 use crate::num::interval::ops::{forward_to_inherent, impl_interval_ops};
+use crate::num::real::Arith;
 use crate::num::{IntervalLike, Real};
 
 impl_interval_ops!(
@@ -13,13 +14,16 @@ impl_interval_ops!(
     |t: &MpfrInterval, v: f64| MpfrInterval::point(v, t.prec())
 );
 
-impl Real for MpfrInterval {
-    forward_to_inherent!(MpfrInterval; unary: sqr, sqrt, sin, cos, tan, exp, ln, sinh, cosh;
-        binary: atan2 -> Self; predicates: );
+impl Arith for MpfrInterval {
     /// `[v, v]` at the precision of `self` (exact from 53 bits up).
     fn lift(&self, v: f64) -> Self {
         MpfrInterval::point(v, self.prec())
     }
+}
+
+impl Real for MpfrInterval {
+    forward_to_inherent!(MpfrInterval; unary: sqr, sqrt, sin, cos, tan, exp, ln, sinh, cosh;
+        binary: atan2 -> Self; predicates: );
     /// π rounded down and up at the precision of `self`.
     fn pi_like(&self) -> Self {
         let p = self.prec();

@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::num::interval::test_support::Rng;
-use crate::num::{IntervalLike, Real};
+use crate::num::{Arith, IntervalLike};
 use rug::float::Constant;
 use rug::ops::Pow;
 use rug::Integer;
