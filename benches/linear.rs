@@ -4,11 +4,16 @@
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use geocert::geom::line_plane::{
-    intersect_line_plane, intersect_line_plane_exact, intersect_line_plane_f64,
+    intersect_line_plane, intersect_line_plane_batch, intersect_line_plane_exact,
+    intersect_line_plane_f64, LinePlaneCase,
 };
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_exact, intersect_planes_f64};
+use geocert::geom::plane_plane::{
+    intersect_planes, intersect_planes_batch, intersect_planes_exact, intersect_planes_f64,
+    PlanePlaneCase,
+};
 use geocert::geom::three_planes::{
-    intersect_three_planes, intersect_three_planes_exact, intersect_three_planes_f64,
+    intersect_three_planes, intersect_three_planes_batch, intersect_three_planes_exact,
+    intersect_three_planes_f64,
 };
 use geocert::geom::{Line, Linear, Plane};
 use nalgebra::Vector3;
@@ -190,6 +195,14 @@ fn bench(c: &mut Criterion) {
                 }
             })
         });
+        let mut out = Vec::with_capacity(BATCH);
+        g.bench_function(BenchmarkId::from_parameter("certified_batch"), |b| {
+            b.iter(|| {
+                out.clear();
+                intersect_three_planes_batch(black_box(&t), &mut out);
+                black_box(&out);
+            })
+        });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {
             b.iter(|| {
                 for p in &tq {
@@ -226,6 +239,15 @@ fn bench(c: &mut Criterion) {
                 }
             })
         });
+        let cases: Vec<LinePlaneCase> = l.iter().map(|(a, p)| (Linear::Line(a), p)).collect();
+        let mut out = Vec::with_capacity(BATCH);
+        g.bench_function(BenchmarkId::from_parameter("certified_batch"), |b| {
+            b.iter(|| {
+                out.clear();
+                intersect_line_plane_batch(black_box(&cases), &mut out);
+                black_box(&out);
+            })
+        });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {
             b.iter(|| {
                 for (a, p) in &lq {
@@ -257,6 +279,15 @@ fn bench(c: &mut Criterion) {
                 for (x, y) in &pp {
                     black_box(intersect_planes(black_box(x), y));
                 }
+            })
+        });
+        let cases: Vec<PlanePlaneCase> = pp.iter().map(|(x, y)| (x, y)).collect();
+        let mut out = Vec::with_capacity(BATCH);
+        g.bench_function(BenchmarkId::from_parameter("certified_batch"), |b| {
+            b.iter(|| {
+                out.clear();
+                intersect_planes_batch(black_box(&cases), &mut out);
+                black_box(&out);
             })
         });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {

@@ -13,10 +13,10 @@ use std::sync::{Once, OnceLock};
 
 use gmp_mpfr_sys::gmp;
 
-use geocert::geom::line_plane::intersect_line_plane;
+use geocert::geom::line_plane::{intersect_line_plane, intersect_line_plane_batch};
 use geocert::geom::lines2::intersect_linear2;
-use geocert::geom::plane_plane::intersect_planes;
-use geocert::geom::three_planes::intersect_three_planes;
+use geocert::geom::plane_plane::{intersect_planes, intersect_planes_batch};
+use geocert::geom::three_planes::{intersect_three_planes, intersect_three_planes_batch};
 use geocert::geom::{Line, Line2, Linear, Linear2, Plane};
 use geocert::Arithmetic;
 use nalgebra::{Vector2, Vector3};
@@ -161,6 +161,23 @@ fn filter_and_integer_tiers_allocate_nothing() {
     assert_allocation_free("2D lines, generic", Arithmetic::Filter, || {
         intersect_linear2(Linear2::Line(&l1), Linear2::Line(&l2))
     });
+
+    // The batch entry points with room reserved in `out`: four-lane filter, nothing else.
+    let triples = vec![generic.clone(); 8];
+    let mut out3 = Vec::with_capacity(8);
+    let lines: Vec<(Linear<f64>, &Plane<f64>)> = vec![(Linear::Line(&line), &a); 8];
+    let mut out_lp = Vec::with_capacity(8);
+    let pairs = vec![(&a2, &b2); 8];
+    let mut out_pp = Vec::with_capacity(8);
+    let (n, ()) = allocations(|| {
+        intersect_three_planes_batch(&triples, &mut out3);
+        intersect_line_plane_batch(&lines, &mut out_lp);
+        intersect_planes_batch(&pairs, &mut out_pp);
+    });
+    assert_eq!(n, 0, "batches: {n} allocations");
+    assert!(out3.iter().all(|c| c.arithmetic == Arithmetic::Filter));
+    assert!(out_lp.iter().all(|c| c.arithmetic == Arithmetic::Filter));
+    assert!(out_pp.iter().all(|c| c.arithmetic == Arithmetic::Filter));
 
     // Exactly degenerate small-integer input: the 128-bit integers. Three planes
     // through the z axis (a line), coincident and parallel planes, a contained line.

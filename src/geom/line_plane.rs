@@ -12,15 +12,18 @@
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
+use super::batch::{self, lane_kernel};
 use super::data::{LineData, Linear, PlaneData};
 use super::exact_tier::{
     filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
 };
 use super::objects::Plane;
+use super::raw::{RawLine, RawPlane};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
-use crate::num::filter::{bound, dispatch_fma, extend_scale, group_scale, round_over, Denominator};
+use crate::num::filter::{bound, decide_over, dispatch_fma, Decided, Denominator};
+use crate::num::lane::Lane;
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
@@ -232,63 +235,68 @@ const EPS_DEN: f64 = 452.0 * U * U;
 const EPS_PNUM: f64 = 2580.0 * U * U;
 const EPS_UVNUM: f64 = 1198.0 * U * U;
 
-/// The filter tier. Groups: positions `P` (the line's origin or end points, the plane's
-/// origin, an implicit plane's `|d|/m_n`), the line direction `L` (`P` for a segment,
-/// whose direction is `b − a`), the plane vectors `G` (`u`, `v`, or the normal). Degrees
-/// (`k = 2` parametric, `1` implicit): `N·c'`: `G^k L`; point numerators: `P G^k L`;
-/// `(u, v)` numerators: `P G L` over `G² L`.
+/// The filter's scales of one case or four lanes, `[m_P, m_L, m_G, m_G^k]`. Groups:
+/// positions `P` (the line's origin or end points, the plane's origin, an implicit
+/// plane's `|d|/m_n`), the line direction `L` (`P` for a segment, whose direction is
+/// `b − a`), the plane vectors `G` (`u`, `v`, or the normal). Degrees (`k = 2`
+/// parametric, `1` implicit): `N·c'`: `G^k L`; point numerators: `P G^k L`; `(u, v)`
+/// numerators: `P G L` over `G² L`. `+∞` outside the filter's range (see
+/// [`crate::num::filter::scale_of`]).
 #[inline(always)]
-fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
-    let (mut mp, ml) = match line {
-        Linear::Line(l) => (
-            group_scale(l.origin().as_slice())?,
-            group_scale(l.dir().as_slice())?,
-        ),
-        Linear::Segment(s) => {
-            let m = group_scale(s.a().as_slice())?.max(group_scale(s.b().as_slice())?);
-            (m, m)
-        }
-    };
-    let (mg, k2) = match plane {
-        Plane::Parametric { origin, u, v } => {
-            mp = mp.max(group_scale(origin.as_slice())?);
-            (
-                group_scale(u.as_slice())?.max(group_scale(v.as_slice())?),
-                true,
-            )
-        }
-        Plane::Implicit { normal, d } => {
-            let mg = group_scale(normal.as_slice())?;
-            mp = extend_scale(Some(mp), *d, mg)?;
-            (mg, false)
-        }
-    };
-    let gk = if k2 { mg * mg } else { mg };
-    let l: LineData<Dd<M>> = line.data();
-    let p: PlaneData<Dd<M>> = PlaneData::new(plane);
-    // The decision first: preparing N·c' proves it non-zero.
+fn scales<F: Lane>(line: &RawLine<F>, plane: &RawPlane<F>) -> [F; 4] {
+    let (mp, ml) = line.scales();
+    let (mg, gk, mp) = plane.scales(mp);
+    [mp, ml, mg, gk]
+}
+
+/// The filter's decisions for one case or four lanes: `ok` where `N·c'` and every
+/// output were decided.
+struct Decisions<F: Lane> {
+    ok: F::Mask,
+    t: Decided<F>,
+    point: [Decided<F>; 3],
+    uv: Option<[Decided<F>; 2]>,
+}
+
+/// The filter tier, written once for one case (`F = f64`) and four lanes (`F4`): the
+/// formulas of [`terms_from`] in double-double, `N·c'` prepared as the denominator (its
+/// sign decided: the verdict), every output's correct rounding decided against the
+/// bounds `ε·scales` of the constants above.
+#[inline(always)]
+fn decide<M: ProductMode, F: Lane>(
+    l: &LineData<Dd<M, F>>,
+    p: &PlaneData<Dd<M, F>>,
+    [mp, ml, mg, gk]: [F; 4],
+) -> Decisions<F> {
     let d = dot3(p.n(), &l.d);
-    let e_den = bound(EPS_DEN, &[gk, ml]);
-    let den = Denominator::new(&d, e_den)?;
-    let tm = terms_from(&l, &p, d, p.value_at(&l.o));
+    let (den_ok, den) = Denominator::prepare(&d, bound(EPS_DEN, &[gk, ml]));
+    let tm = terms_from(l, p, d, p.value_at(&l.o));
+    let t = decide_over(&tm.f0.negate(), bound(EPS_PNUM, &[mp, gk]), &den);
     let e_pnum = bound(EPS_PNUM, &[mp, gk, ml]);
-    let e_f0 = bound(EPS_PNUM, &[mp, gk]);
-    let t = round_over(&tm.f0.negate(), e_f0, &den)?;
-    let point = [
-        round_over(&tm.pnum[0], e_pnum, &den)?,
-        round_over(&tm.pnum[1], e_pnum, &den)?,
-        round_over(&tm.pnum[2], e_pnum, &den)?,
-    ];
+    let point = each!(i in [0, 1, 2] => decide_over(&tm.pnum[i], e_pnum, &den));
+    let mut ok = den_ok & t.ok & point[0].ok & point[1].ok & point[2].ok;
     let uv = match &tm.uvnum {
         Some([un, vn]) => {
             let e_uv = bound(EPS_UVNUM, &[mp, mg, ml]);
-            Some(Vector2::new(
-                round_over(un, e_uv, &den)?,
-                round_over(vn, e_uv, &den)?,
-            ))
+            let uv = [decide_over(un, e_uv, &den), decide_over(vn, e_uv, &den)];
+            ok = ok & uv[0].ok & uv[1].ok;
+            Some(uv)
         }
         None => None,
     };
+    Decisions { ok, t, point, uv }
+}
+
+/// The answer from the correctly rounded outputs: the point, or the carrier's point
+/// outside the line's domain (decided on the rounded `t`: the range ends are doubles,
+/// so comparing with the exact `t` is comparing with its enclosure).
+#[inline(always)]
+fn answer(
+    line: Linear<f64>,
+    t: Rounded,
+    point: [Rounded; 3],
+    uv: Option<[Rounded; 2]>,
+) -> LinePlane<Rounded> {
     let inside = match line {
         Linear::Line(l) => match l.range() {
             None => true,
@@ -299,19 +307,130 @@ fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePla
     let pt = LinePlanePoint {
         point: Vector3::from(point),
         t,
-        uv,
+        uv: uv.map(Vector2::from),
     };
-    Some(if inside {
+    if inside {
         LinePlane::Point(pt)
     } else {
         LinePlane::OutsideDomain(pt)
-    })
+    }
+}
+
+/// The filter tier for one case.
+#[inline(always)]
+fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
+    let (l, p) = (RawLine::new(line), RawPlane::new(plane));
+    let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p));
+    if !dc.ok {
+        return None;
+    }
+    let uv = dc.uv.map(|[u, v]| [u.value(), v.value()]);
+    Some(answer(line, dc.t.value(), dc.point.map(Decided::value), uv))
+}
+
+/// A case of the batch entry point.
+pub type LinePlaneCase<'a> = (Linear<'a, f64>, &'a Plane<f64>);
+
+/// The filter tier for four cases of one shape ([`batch_shape`]) in lanes: writes the
+/// answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+#[allow(clippy::manual_map)] // `match`, not a closure: see below
+#[inline(always)]
+fn fast4<M: ProductMode>(
+    cases: &[LinePlaneCase],
+    idx: [usize; 4],
+    out: &mut [Certified<LinePlane<Rounded>>],
+) -> u32 {
+    let c = idx.map(|i| &cases[i]);
+    let (Some(l), Some(p)) = (
+        RawLine::gather(c.map(|c| c.0)),
+        RawPlane::gather(c.map(|c| c.1)),
+    ) else {
+        return 0;
+    };
+    let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p));
+    let ok = dc.ok.bits();
+    // (no closures over lanes here: a closure may be compiled out of line, without
+    // this function's AVX target feature)
+    let t = dc.t.lanes();
+    let point = [
+        dc.point[0].lanes(),
+        dc.point[1].lanes(),
+        dc.point[2].lanes(),
+    ];
+    let uv = match &dc.uv {
+        Some([u, v]) => Some([u.lanes(), v.lanes()]),
+        None => None,
+    };
+    for (i, &j) in idx.iter().enumerate() {
+        if ok >> i & 1 == 1 {
+            let uv = uv.map(|[u, v]| [u.get(i), v.get(i)]);
+            let p = [point[0].get(i), point[1].get(i), point[2].get(i)];
+            out[j] = filter_certified(answer(c[i].0, t.get(i), p, uv));
+        }
+    }
+    ok
+}
+
+/// The batch shape: line or segment, parametric or implicit plane.
+fn batch_shape((l, p): &LinePlaneCase) -> usize {
+    usize::from(matches!(l, Linear::Segment(_))) * 2
+        + usize::from(matches!(p, Plane::Implicit { .. }))
+}
+
+/// Certified line ∩ plane for many cases: appends to `out`, in order, exactly the
+/// answer [`intersect_line_plane`] gives for each case (see [`super::batch`]: four cases
+/// of one shape at a time through the four-lane filter). `out` only allocates when it
+/// grows.
+pub fn intersect_line_plane_batch(
+    cases: &[LinePlaneCase],
+    out: &mut Vec<Certified<LinePlane<Rounded>>>,
+) {
+    let lanes = lane_kernel!(fast4, LinePlaneCase, Certified<LinePlane<Rounded>>);
+    batch::run(
+        cases,
+        out,
+        batch_shape,
+        lanes,
+        |&(l, p)| intersect_line_plane(l, p),
+        || filter_certified(LinePlane::Parallel),
+    );
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::geom::Line;
     use crate::num::error_bound::ErrorBound;
+
+    /// The lane kernel itself decides four generic cases (a line, a segment-free batch of
+    /// one shape) and writes the scalar answers; a lane whose scale is out of range (a
+    /// 1e200 origin) is left undecided, without disturbing the others.
+    #[test]
+    fn lane_kernel_decides_generic_lanes() {
+        let Some(kernel) = lane_kernel!(fast4, LinePlaneCase, Certified<LinePlane<Rounded>>) else {
+            return; // no AVX/FMA: the batch runs case by case
+        };
+        let plane = Plane::parametric(
+            [0.3, -1.7, 2.9].into(),
+            [1.1, 0.2, -0.7].into(),
+            [-0.4, 1.3, 0.6].into(),
+        )
+        .unwrap();
+        let lines: Vec<Line<f64>> = (0..4)
+            .map(|i| {
+                let o = if i == 2 { 1e200 } else { 0.1 * i as f64 + 0.37 };
+                Line::new([o, -2.3, 0.71].into(), [0.9, 0.33 + i as f64, -1.21].into()).unwrap()
+            })
+            .collect();
+        let cases: Vec<LinePlaneCase> = lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
+        let mut out = vec![filter_certified(LinePlane::Parallel); 4];
+        let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        assert_eq!(bits, 0b1011);
+        for i in [0, 1, 3] {
+            assert_eq!(out[i], intersect_line_plane(cases[i].0, cases[i].1));
+        }
+        assert_eq!(out[2], filter_certified(LinePlane::Parallel));
+    }
 
     /// Derive the filter constants from the formulas and check the written ones cover them.
     #[test]

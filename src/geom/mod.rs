@@ -11,6 +11,7 @@
 //! rings of rising cost: 128-bit and 768-bit dyadic integers ([`crate::num::dyadic128`],
 //! [`crate::num::dyadic`]; no allocation), floating-point expansions, rationals.
 
+mod batch;
 pub mod data;
 mod exact_tier;
 pub mod line_plane;
@@ -18,6 +19,7 @@ pub mod lines2;
 pub mod objects;
 pub mod plane_plane;
 pub mod project;
+mod raw;
 pub mod three_planes;
 
 pub use data::{Linear, Linear2};

@@ -22,17 +22,20 @@
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
+use super::batch::{self, lane_kernel};
 use super::data::PlaneData;
 use super::exact_tier::{
     filter_certified, ring_tier, ExactRing, RingRounder, Rounder, SmallInteger, WideInteger,
 };
 use super::objects::Plane;
+use super::raw::RawPlane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{
-    bound, dispatch_fma, extend_scale, group_scale, round_over, round_value, Denominator,
+    bound, decide_over, decide_value, dispatch_fma, Decided, Denominator, RoundedLanes,
 };
+use crate::num::lane::{Lane, F4};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::{exponent_of, Rounded};
@@ -372,92 +375,207 @@ pub(crate) const EPS_PNUM: f64 = 271491.0 * U * U;
 pub(crate) const EPS_PARAM: f64 = 134081.0 * U * U;
 pub(crate) const EPS_PDIR: f64 = 173.0 * U * U;
 
-/// Group scales of a plane for the filter: `(m_G, m_G^k)` and its contribution to the
-/// position scale.
+/// The filter's decisions for one case or four lanes: `ok` where `|n|²` and every output
+/// were decided.
+struct Decisions<F: Lane> {
+    ok: F::Mask,
+    dir: [Decided<F>; 3],
+    point: [Decided<F>; 3],
+    on_a: Option<ParamDecisions<F>>,
+    on_b: Option<ParamDecisions<F>>,
+}
+
+/// A parameter line's decided origin and direction.
+struct ParamDecisions<F: Lane> {
+    origin: [Decided<F>; 2],
+    dir: [Decided<F>; 2],
+}
+
+/// The filter tier, written once for one case (`F = f64`) and four lanes (`F4`): groups
+/// `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees (`k = 2` parametric, 1 implicit):
+/// `n`: `G_a^ka G_b^kb`; `|n|²`: twice that; point numerators: `P G_a^2ka G_b^2kb`;
+/// parameter numerators on `a`: `P G_a^(ka+1) G_b^2kb` (on `b` symmetrically);
+/// parameter directions on `a`: `G_a G_b^kb`. The direction `n` is accepted only when
+/// its largest component is in `[2⁻⁹⁹⁹, 2⁹⁹⁹)` (else the exact tiers scale it).
 #[inline(always)]
-pub(crate) fn plane_scales(p: &Plane<f64>, mp: f64) -> Option<(f64, f64, f64)> {
-    match p {
-        Plane::Parametric { origin, u, v } => {
-            let m = group_scale(u.as_slice())?.max(group_scale(v.as_slice())?);
-            Some((m, m * m, mp.max(group_scale(origin.as_slice())?)))
-        }
-        Plane::Implicit { normal, d } => {
-            let m = group_scale(normal.as_slice())?;
-            Some((m, m, extend_scale(Some(mp), *d, m)?))
-        }
+fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Decisions<F> {
+    let (ma, ka, mp) = a.scales(F::splat(SCALE_FLOOR));
+    let (mb, kb, mp) = b.scales(mp);
+    let (pa, pb) = (a.data::<M>(), b.data::<M>());
+    // The decision: preparing |n|² proves n ≠ 0.
+    let n = cross3(pa.n(), pb.n());
+    let nn2 = dot3(&n, &n);
+    let (mut ok, nn) = Denominator::prepare(&nn2, bound(EPS_NN, &[ka, ka, kb, kb]));
+    let tm = terms_from(&pa, &pb, n, nn2);
+    let e_n = bound(EPS_N, &[ka, kb]);
+    let dir = each!(i in [0, 1, 2] => decide_value(&tm.n[i], e_n));
+    let big = dir[0].c.abs().max(dir[1].c.abs()).max(dir[2].c.abs());
+    ok = ok
+        & dir[0].ok
+        & dir[1].ok
+        & dir[2].ok
+        & F::splat(DIR_MIN).less_eq(big)
+        & big.less(F::splat(DIR_MAX));
+    let e_p = bound(EPS_PNUM, &[mp, ka, ka, kb, kb]);
+    let point = each!(i in [0, 1, 2] => decide_over(&tm.pnum[i], e_p, &nn));
+    ok = ok & point[0].ok & point[1].ok & point[2].ok;
+    let on_a = param_line(&tm.on_a, &nn, [mp, ma, ka, kb], &mut ok);
+    let on_b = param_line(&tm.on_b, &nn, [mp, mb, kb, ka], &mut ok);
+    Decisions {
+        ok,
+        dir,
+        point,
+        on_a,
+        on_b,
     }
 }
 
-/// The filter tier: groups `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees
-/// (`k = 2` parametric, 1 implicit): `n`: `G_a^ka G_b^kb`; `|n|²`: twice that; point
-/// numerators: `P G_a^2ka G_b^2kb`; parameter numerators on `a`: `P G_a^(ka+1) G_b^2kb`
-/// (on `b` symmetrically); parameter directions on `a`: `G_a G_b^kb`.
+/// `2⁻⁹⁹⁹` and `2⁹⁹⁹`: the accepted range of the direction's largest component.
+const DIR_MIN: f64 = 1.8665272370064378e-301;
+const DIR_MAX: f64 = 5.357543035931337e300;
+
+/// A plane's parameter line (§8 eq. (8.4)), decided (`None`: the plane has no
+/// parameters); `ok` is narrowed to the lanes where every part was decided. `scales`
+/// are `[m_p, m, k_q, k_o]`: origin scale, this plane's group scale, its degree and the
+/// other plane's.
+#[inline(always)]
+fn param_line<M: ProductMode, F: Lane>(
+    t: &Option<ParamTerms<Dd<M, F>>>,
+    nn: &Denominator<M, F>,
+    [mp, m, kq, ko]: [F; 4],
+    ok: &mut F::Mask,
+) -> Option<ParamDecisions<F>> {
+    let t = t.as_ref()?;
+    let e_num = bound(EPS_PARAM, &[mp, kq, m, ko, ko]);
+    let e_dir = bound(EPS_PDIR, &[m, ko]);
+    let d = ParamDecisions {
+        origin: [
+            decide_over(&t.num[0], e_num, nn),
+            decide_over(&t.num[1], e_num, nn),
+        ],
+        dir: [
+            decide_value(&t.dir[0], e_dir),
+            decide_value(&t.dir[1], e_dir),
+        ],
+    };
+    *ok = *ok & d.origin[0].ok & d.origin[1].ok & d.dir[0].ok & d.dir[1].ok;
+    Some(d)
+}
+
+/// The filter tier for one case.
 #[inline(always)]
 fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-    let (ma, ka, mp) = plane_scales(a, SCALE_FLOOR)?;
-    let (mb, kb, mp) = plane_scales(b, mp)?;
-    let pa: PlaneData<Dd<M>> = PlaneData::new(a);
-    let pb: PlaneData<Dd<M>> = PlaneData::new(b);
-    // The decision first: preparing |n|² proves n ≠ 0.
-    let n = cross3(pa.n(), pb.n());
-    let e_nn = bound(EPS_NN, &[ka, ka, kb, kb]);
-    let nn2 = dot3(&n, &n);
-    let nn = Denominator::new(&nn2, e_nn)?;
-    let tm = terms_from(&pa, &pb, n, nn2);
-    let e_n = bound(EPS_N, &[ka, kb]);
-    let dir = [
-        round_value(&tm.n[0], e_n),
-        round_value(&tm.n[1], e_n),
-        round_value(&tm.n[2], e_n),
-    ];
-    let dir = dir.map(|d| d.filter(|d| !d.overflowed()));
-    let [Some(d0), Some(d1), Some(d2)] = dir else {
-        return None;
-    };
-    let big = d0.nearest.abs().max(d1.nearest.abs()).max(d2.nearest.abs());
-    if !(big >= 2f64.powi(-999) && big < 2f64.powi(999)) {
+    let dc = decide::<M, f64>(&RawPlane::new(a), &RawPlane::new(b));
+    if !dc.ok {
         return None;
     }
-    let e_p = bound(EPS_PNUM, &[mp, ka, ka, kb, kb]);
-    let point = [
-        round_over(&tm.pnum[0], e_p, &nn)?,
-        round_over(&tm.pnum[1], e_p, &nn)?,
-        round_over(&tm.pnum[2], e_p, &nn)?,
-    ];
-    let on_a = param_line(&tm.on_a, &nn, [mp, ma, ka, kb])?;
-    let on_b = param_line(&tm.on_b, &nn, [mp, mb, kb, ka])?;
+    let param = |p: Option<ParamDecisions<f64>>| {
+        p.map(|p| ParamLine {
+            origin: Vector2::new(p.origin[0].value(), p.origin[1].value()),
+            dir: Vector2::new(p.dir[0].value(), p.dir[1].value()),
+        })
+    };
     Some(PlaneLine {
-        point: Vector3::from(point),
-        dir: Vector3::new(d0, d1, d2),
+        point: Vector3::from(dc.point.map(Decided::value)),
+        dir: Vector3::from(dc.dir.map(Decided::value)),
         dir_exponent: 0,
-        on_a,
-        on_b,
+        on_a: param(dc.on_a),
+        on_b: param(dc.on_b),
     })
 }
 
-/// A plane's parameter line (§8 eq. (8.4)) correctly rounded, `None` when the filter
-/// cannot round it (`Some(None)`: the plane has no parameters). `scales` are
-/// `[m_p, m, k_q, k_o]`: origin scale, this plane's group scale, its degree and the
-/// other plane's.
+/// A parameter line's roundings in lanes.
+struct ParamLanes {
+    origin: [RoundedLanes; 2],
+    dir: [RoundedLanes; 2],
+}
+
+impl ParamLanes {
+    #[allow(clippy::manual_map)] // `match`, not a closure: see below
+    #[inline(always)]
+    fn new(p: &Option<ParamDecisions<F4>>) -> Option<ParamLanes> {
+        match p {
+            Some(p) => Some(ParamLanes {
+                origin: [p.origin[0].lanes(), p.origin[1].lanes()],
+                dir: [p.dir[0].lanes(), p.dir[1].lanes()],
+            }),
+            None => None,
+        }
+    }
+    #[inline(always)]
+    fn get(&self, i: usize) -> ParamLine<Rounded> {
+        ParamLine {
+            origin: Vector2::new(self.origin[0].get(i), self.origin[1].get(i)),
+            dir: Vector2::new(self.dir[0].get(i), self.dir[1].get(i)),
+        }
+    }
+}
+
+/// A case of the batch entry point.
+pub type PlanePlaneCase<'a> = (&'a Plane<f64>, &'a Plane<f64>);
+
+/// The filter tier for four cases of one shape ([`batch_shape`]) in lanes: writes the
+/// answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
 #[inline(always)]
-fn param_line<M: ProductMode>(
-    t: &Option<ParamTerms<Dd<M>>>,
-    nn: &Denominator<M>,
-    [mp, m, kq, ko]: [f64; 4],
-) -> Option<Option<ParamLine<Rounded>>> {
-    let Some(t) = t else { return Some(None) };
-    let e_num = bound(EPS_PARAM, &[mp, kq, m, ko, ko]);
-    let e_dir = bound(EPS_PDIR, &[m, ko]);
-    Some(Some(ParamLine {
-        origin: Vector2::new(
-            round_over(&t.num[0], e_num, nn)?,
-            round_over(&t.num[1], e_num, nn)?,
-        ),
-        dir: Vector2::new(
-            round_value(&t.dir[0], e_dir)?,
-            round_value(&t.dir[1], e_dir)?,
-        ),
-    }))
+fn fast4<M: ProductMode>(
+    cases: &[PlanePlaneCase],
+    idx: [usize; 4],
+    out: &mut [Certified<PlanePlane<Rounded>>],
+) -> u32 {
+    let c = idx.map(|i| &cases[i]);
+    let (Some(a), Some(b)) = (
+        RawPlane::gather([c[0].0, c[1].0, c[2].0, c[3].0]),
+        RawPlane::gather([c[0].1, c[1].1, c[2].1, c[3].1]),
+    ) else {
+        return 0;
+    };
+    let dc = decide::<M, F4>(&a, &b);
+    let ok = dc.ok.bits();
+    // (no closures over lanes: they may be compiled without the AVX target feature)
+    let point = [
+        dc.point[0].lanes(),
+        dc.point[1].lanes(),
+        dc.point[2].lanes(),
+    ];
+    let dir = [dc.dir[0].lanes(), dc.dir[1].lanes(), dc.dir[2].lanes()];
+    let (on_a, on_b) = (ParamLanes::new(&dc.on_a), ParamLanes::new(&dc.on_b));
+    for (i, &j) in idx.iter().enumerate() {
+        if ok >> i & 1 == 1 {
+            out[j] = filter_certified(PlanePlane::Line(PlaneLine {
+                point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
+                dir: Vector3::new(dir[0].get(i), dir[1].get(i), dir[2].get(i)),
+                dir_exponent: 0,
+                on_a: on_a.as_ref().map(|p| p.get(i)),
+                on_b: on_b.as_ref().map(|p| p.get(i)),
+            }));
+        }
+    }
+    ok
+}
+
+/// The batch shape: the kinds of the two planes (parametric or implicit), as bits.
+fn batch_shape((a, b): &PlanePlaneCase) -> usize {
+    let implicit = |q: &Plane<f64>| usize::from(matches!(q, Plane::Implicit { .. }));
+    implicit(a) | implicit(b) << 1
+}
+
+/// Certified plane ∩ plane for many cases: appends to `out`, in order, exactly the
+/// answer [`intersect_planes`] gives for each pair (see [`super::batch`]: four pairs of
+/// one shape at a time through the four-lane filter). `out` only allocates when it
+/// grows.
+pub fn intersect_planes_batch(
+    cases: &[PlanePlaneCase],
+    out: &mut Vec<Certified<PlanePlane<Rounded>>>,
+) {
+    let lanes = lane_kernel!(fast4, PlanePlaneCase, Certified<PlanePlane<Rounded>>);
+    batch::run(
+        cases,
+        out,
+        batch_shape,
+        lanes,
+        |&(a, b)| intersect_planes(a, b),
+        || filter_certified(PlanePlane::Parallel),
+    );
 }
 
 /// The position scale before any origin is seen.
@@ -482,7 +600,40 @@ pub(crate) fn bound_planes() -> [PlaneData<crate::num::error_bound::ErrorBound>;
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The lane kernel decides four generic pairs of one shape and writes the scalar
+    /// answers; a lane of two parallel planes is left to the scalar path.
+    #[test]
+    fn lane_kernel_decides_generic_lanes() {
+        let Some(kernel) = lane_kernel!(fast4, PlanePlaneCase, Certified<PlanePlane<Rounded>>)
+        else {
+            return; // no AVX/FMA
+        };
+        let planes: Vec<Plane<f64>> = (0..8)
+            .map(|i| {
+                let s = 0.41 + 1.37 * i as f64;
+                let n = if i == 3 { 0.41 + 1.37 * 2.0 } else { s };
+                Plane::implicit(Vector3::new(1.7 / n, n, 0.3 - n * 1.37), s).unwrap()
+            })
+            .collect();
+        let cases: Vec<PlanePlaneCase> = (0..4)
+            .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
+            .collect();
+        let mut out = vec![filter_certified(PlanePlane::Parallel); 4];
+        let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        assert_eq!(bits, 0b1101);
+        for i in [0, 2, 3] {
+            assert_eq!(out[i], intersect_planes(cases[i].0, cases[i].1));
+            assert!(matches!(out[i].value, PlanePlane::Line(_)));
+        }
+    }
     use crate::num::error_bound::ErrorBound;
+
+    #[test]
+    fn direction_range_constants() {
+        assert_eq!(DIR_MIN, 2f64.powi(-999));
+        assert_eq!(DIR_MAX, 2f64.powi(999));
+    }
 
     #[test]
     fn filter_constants() {

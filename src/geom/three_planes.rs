@@ -23,19 +23,22 @@
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
+use super::batch::{self, lane_kernel};
 use super::data::PlaneData;
 use super::exact_tier::{
     filter_certified, ring_tier, ExactRing, Rounder, SmallInteger, WideInteger,
 };
 use super::objects::Plane;
 use super::plane_plane::{
-    coincide_parallel, finish, plane_scales, round_line, round_line_ring,
-    terms_from as terms_from_pair, PlaneLine,
+    coincide_parallel, finish, round_line, round_line_ring, terms_from as terms_from_pair,
+    PlaneLine,
 };
+use super::raw::RawPlane;
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
-use crate::num::filter::{bound, dispatch_fma, round_over, Denominator, SCALE_MIN};
+use crate::num::filter::{bound, decide_over, dispatch_fma, Decided, Denominator, SCALE_MIN};
+use crate::num::lane::{Lane, F4};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
@@ -292,52 +295,169 @@ const EPS_DET: f64 = 5598.0 * U * U;
 const EPS_PNUM: f64 = 66138.0 * U * U;
 const EPS_PARAM: f64 = 20027.0 * U * U;
 
-/// The filter tier (point case only). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`,
-/// `G_2`; with `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`:
-/// `S₀S₁S₂`; point numerators: `P S₀S₁S₂`; parameter numerators of plane `k`:
-/// `P S_i S_j m_k`.
+/// The filter's decisions for one case or four lanes: `ok` where `D` and every output
+/// were decided.
+struct Decisions<F: Lane> {
+    ok: F::Mask,
+    point: [Decided<F>; 3],
+    params: [Option<[Decided<F>; 2]>; 3],
+}
+
+/// The filter tier (point case only), written once for one case (`F = f64`) and four
+/// lanes (`F4`). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`, `G_2`; with
+/// `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`: `S₀S₁S₂`;
+/// point numerators: `P S₀S₁S₂`; parameter numerators of plane `k`: `P S_i S_j m_k`.
 #[inline(always)]
-fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
-    let (m0, s0, mp) = plane_scales(&p[0], SCALE_MIN)?;
-    let (m1, s1, mp) = plane_scales(&p[1], mp)?;
-    let (m2, s2, mp) = plane_scales(&p[2], mp)?;
+fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Decisions<F> {
+    let (m0, s0, mp) = raw[0].scales(F::splat(SCALE_MIN));
+    let (m1, s1, mp) = raw[1].scales(mp);
+    let (m2, s2, mp) = raw[2].scales(mp);
     let (m, s) = ([m0, m1, m2], [s0, s1, s2]);
-    let data: [PlaneData<Dd<M>>; 3] = [
-        PlaneData::new(&p[0]),
-        PlaneData::new(&p[1]),
-        PlaneData::new(&p[2]),
-    ];
-    // The decision first: preparing D proves D ≠ 0 (|D̂| > its error bound), and an
-    // undecided (e.g. exactly degenerate) input leaves before the numerators.
+    let data: [PlaneData<Dd<M, F>>; 3] = [raw[0].data(), raw[1].data(), raw[2].data()];
+    // The decision: preparing D proves D ≠ 0 (|D̂| > its error bound).
     let (c, d) = det_terms(&data);
-    let e_det = bound(EPS_DET, &s);
-    let det = Denominator::new(&d, e_det)?;
+    let (mut ok, det) = Denominator::prepare(&d, bound(EPS_DET, &s));
     let tm = terms_from(&data, &c, d);
     let e_p = bound(EPS_PNUM, &[mp, s0, s1, s2]);
-    let point = [
-        round_over(&tm.pnum[0], e_p, &det)?,
-        round_over(&tm.pnum[1], e_p, &det)?,
-        round_over(&tm.pnum[2], e_p, &det)?,
-    ];
-    let mut params = [None, None, None];
-    for (k, q) in tm.params.iter().enumerate() {
-        if let Some([un, vn]) = q {
+    let point = each!(i in [0, 1, 2] => decide_over(&tm.pnum[i], e_p, &det));
+    ok = ok & point[0].ok & point[1].ok & point[2].ok;
+    let params = each!(k in [0, 1, 2] => match &tm.params[k] {
+        Some([un, vn]) => {
             let e = bound(EPS_PARAM, &[mp, s[(k + 1) % 3], s[(k + 2) % 3], m[k]]);
-            params[k] = Some(Vector2::new(
-                round_over(un, e, &det)?,
-                round_over(vn, e, &det)?,
-            ));
+            let q = [decide_over(un, e, &det), decide_over(vn, e, &det)];
+            ok = ok & q[0].ok & q[1].ok;
+            Some(q)
         }
+        None => None,
+    });
+    Decisions { ok, point, params }
+}
+
+/// The filter tier for one case.
+#[inline(always)]
+fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
+    let raw = [
+        RawPlane::new(&p[0]),
+        RawPlane::new(&p[1]),
+        RawPlane::new(&p[2]),
+    ];
+    let dc = decide::<M, f64>(&raw);
+    if !dc.ok {
+        return None;
     }
     Some(ThreePlanes::Point {
-        point: Vector3::from(point),
-        params,
+        point: Vector3::from(dc.point.map(Decided::value)),
+        params: dc
+            .params
+            .map(|q| q.map(|[u, v]| Vector2::new(u.value(), v.value()))),
     })
+}
+
+/// The filter tier for four cases of one shape ([`batch_shape`]) in lanes: writes the
+/// answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+#[allow(clippy::manual_map)] // `match`, not a closure: see below
+#[inline(always)]
+fn fast4<M: ProductMode>(
+    cases: &[[Plane<f64>; 3]],
+    idx: [usize; 4],
+    out: &mut [Certified<ThreePlanes<Rounded>>],
+) -> u32 {
+    let c = idx.map(|i| &cases[i]);
+    let (Some(r0), Some(r1), Some(r2)) = (
+        RawPlane::gather([&c[0][0], &c[1][0], &c[2][0], &c[3][0]]),
+        RawPlane::gather([&c[0][1], &c[1][1], &c[2][1], &c[3][1]]),
+        RawPlane::gather([&c[0][2], &c[1][2], &c[2][2], &c[3][2]]),
+    ) else {
+        return 0;
+    };
+    let dc = decide::<M, F4>(&[r0, r1, r2]);
+    let ok = dc.ok.bits();
+    // (no closures over lanes: they may be compiled without the AVX target feature)
+    let point = [
+        dc.point[0].lanes(),
+        dc.point[1].lanes(),
+        dc.point[2].lanes(),
+    ];
+    let params = each!(k in [0, 1, 2] => match &dc.params[k] {
+        Some([u, v]) => Some([u.lanes(), v.lanes()]),
+        None => None,
+    });
+    for (i, &j) in idx.iter().enumerate() {
+        if ok >> i & 1 == 1 {
+            out[j] = filter_certified(ThreePlanes::Point {
+                point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
+                params: each!(k in [0, 1, 2] => match &params[k] {
+                    Some([u, v]) => Some(Vector2::new(u.get(i), v.get(i))),
+                    None => None,
+                }),
+            });
+        }
+    }
+    ok
+}
+
+/// The batch shape: the kinds of the three planes (parametric or implicit), as bits.
+fn batch_shape(p: &[Plane<f64>; 3]) -> usize {
+    let implicit = |q: &Plane<f64>| usize::from(matches!(q, Plane::Implicit { .. }));
+    implicit(&p[0]) | implicit(&p[1]) << 1 | implicit(&p[2]) << 2
+}
+
+/// Certified three planes for many cases: appends to `out`, in order, exactly the
+/// answer [`intersect_three_planes`] gives for each triple (see [`super::batch`]: four
+/// triples of one shape at a time through the four-lane filter). `out` only allocates
+/// when it grows.
+pub fn intersect_three_planes_batch(
+    cases: &[[Plane<f64>; 3]],
+    out: &mut Vec<Certified<ThreePlanes<Rounded>>>,
+) {
+    let lanes = lane_kernel!(fast4, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>);
+    batch::run(
+        cases,
+        out,
+        batch_shape,
+        lanes,
+        intersect_three_planes,
+        || filter_certified(ThreePlanes::Empty),
+    );
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    fn plane(seed: f64, implicit: bool) -> Plane<f64> {
+        let v = |a: f64, b: f64, c: f64| Vector3::new(a * seed, b + seed, c - seed);
+        if implicit {
+            Plane::implicit(v(1.3, -0.2, 0.7), 0.9 * seed).unwrap()
+        } else {
+            Plane::parametric(v(0.3, 1.1, -2.0), v(1.7, 0.4, 0.2), v(-0.6, 1.9, 0.8)).unwrap()
+        }
+    }
+
+    /// The lane kernel decides four generic triples of one shape and writes the scalar
+    /// answers; an exactly degenerate lane (three times the same plane) is left to the
+    /// scalar path.
+    #[test]
+    fn lane_kernel_decides_generic_lanes() {
+        let Some(kernel) = lane_kernel!(fast4, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>)
+        else {
+            return; // no AVX/FMA
+        };
+        let mut cases: Vec<[Plane<f64>; 3]> = (0..4)
+            .map(|i| {
+                let s = 0.37 + i as f64;
+                [plane(s, false), plane(s * 1.9, true), plane(-s, false)]
+            })
+            .collect();
+        cases[1] = [plane(2.0, false), plane(3.0, true), plane(2.0, false)];
+        let mut out = vec![filter_certified(ThreePlanes::Empty); 4];
+        let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        assert_eq!(bits, 0b1101);
+        for i in [0, 2, 3] {
+            assert_eq!(out[i], intersect_three_planes(&cases[i]));
+            assert!(matches!(out[i].value, ThreePlanes::Point { .. }));
+        }
+    }
     use crate::geom::plane_plane::bound_planes;
     use crate::num::error_bound::ErrorBound;
 

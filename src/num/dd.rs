@@ -25,6 +25,7 @@
 
 use std::marker::PhantomData;
 
+use super::lane::Lane;
 use super::ring::Ring;
 
 /// u = 2⁻⁵³, the unit roundoff of binary64.
@@ -35,44 +36,45 @@ pub const ETA: f64 = 5e-324;
 /// How a double product is made error-free: with a fused multiply-add or with
 /// Dekker's algorithm. A type parameter so that each instantiation is compiled
 /// straight-line; the FMA one is called from `#[target_feature(enable = "fma")]`
-/// functions on x86-64 (`geom::filter::fma_available`).
-pub trait ProductMode: Copy + 'static {
+/// functions on x86-64 (`geom::filter::fma_available`). Generic over the [`Lane`]
+/// type: one `f64` or four lanes, each lane computing what the scalar code computes.
+pub trait ProductMode: Copy + std::fmt::Debug + PartialEq + 'static {
     /// `(p, e)` with `p = fl(ab)` and `p + e = ab` exactly.
-    fn two_prod(a: f64, b: f64) -> (f64, f64);
+    fn two_prod<F: Lane>(a: F, b: F) -> (F, F);
     /// `a·b + c` with one or two roundings.
-    fn mul_add(a: f64, b: f64, c: f64) -> f64;
+    fn mul_add<F: Lane>(a: F, b: F, c: F) -> F;
     /// `p − c·q` with one rounding, provided `fl(c·q)` lies within a factor 2 of `p`
     /// (then `p − fl(c·q)` is exact by Sterbenz's lemma and only the final subtraction
     /// of the product's error rounds; with FMA it is one fused operation).
-    fn residual(p: f64, c: f64, q: f64) -> f64;
+    fn residual<F: Lane>(p: F, c: F, q: F) -> F;
 }
 
 /// Products through `f64::mul_add` (an instruction where the caller enables FMA).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WithFma;
 /// Products through Dekker's algorithm (no FMA needed).
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone, Copy, PartialEq)]
 pub struct WithoutFma;
 
 impl ProductMode for WithFma {
     #[inline(always)]
-    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    fn two_prod<F: Lane>(a: F, b: F) -> (F, F) {
         let p = a * b;
-        (p, a.mul_add(b, -p))
+        (p, a.fused_mul_add(b, -p))
     }
     #[inline(always)]
-    fn mul_add(a: f64, b: f64, c: f64) -> f64 {
-        a.mul_add(b, c)
+    fn mul_add<F: Lane>(a: F, b: F, c: F) -> F {
+        a.fused_mul_add(b, c)
     }
     #[inline(always)]
-    fn residual(p: f64, c: f64, q: f64) -> f64 {
-        (-c).mul_add(q, p)
+    fn residual<F: Lane>(p: F, c: F, q: F) -> F {
+        (-c).fused_mul_add(q, p)
     }
 }
 
 impl ProductMode for WithoutFma {
     #[inline(always)]
-    fn two_prod(a: f64, b: f64) -> (f64, f64) {
+    fn two_prod<F: Lane>(a: F, b: F) -> (F, F) {
         let p = a * b;
         let (ah, al) = split(a);
         let (bh, bl) = split(b);
@@ -80,11 +82,11 @@ impl ProductMode for WithoutFma {
         (p, e)
     }
     #[inline(always)]
-    fn mul_add(a: f64, b: f64, c: f64) -> f64 {
+    fn mul_add<F: Lane>(a: F, b: F, c: F) -> F {
         a * b + c
     }
     #[inline(always)]
-    fn residual(p: f64, c: f64, q: f64) -> f64 {
+    fn residual<F: Lane>(p: F, c: F, q: F) -> F {
         let (m, e) = Self::two_prod(c, q);
         (p - m) - e
     }
@@ -92,16 +94,15 @@ impl ProductMode for WithoutFma {
 
 /// Veltkamp's split of `a` into two 26-bit halves, `a = h + l` exactly.
 #[inline(always)]
-fn split(a: f64) -> (f64, f64) {
-    const C: f64 = 134217729.0; // 2^27 + 1
-    let t = C * a;
+fn split<F: Lane>(a: F) -> (F, F) {
+    let t = F::splat(134217729.0) * a; // 2^27 + 1
     let h = t - (t - a);
     (h, a - h)
 }
 
 /// `(s, t)` with `s = fl(a + b)` and `s + t = a + b` exactly (Knuth).
 #[inline(always)]
-pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
+pub fn two_sum<F: Lane>(a: F, b: F) -> (F, F) {
     let s = a + b;
     let bb = s - a;
     let t = (a - (s - bb)) + (b - bb);
@@ -110,16 +111,16 @@ pub fn two_sum(a: f64, b: f64) -> (f64, f64) {
 
 /// [`two_sum`] when `exponent(a) ≥ exponent(b)` or `a = 0` (Dekker).
 #[inline(always)]
-pub fn fast_two_sum(a: f64, b: f64) -> (f64, f64) {
+pub fn fast_two_sum<F: Lane>(a: F, b: F) -> (F, F) {
     let s = a + b;
     (s, b - (s - a))
 }
 
-/// A double-double `h + l` (not necessarily normalised).
+/// A double-double `h + l` (not necessarily normalised); with `F = F4`, four of them.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Dd<M: ProductMode> {
-    pub h: f64,
-    pub l: f64,
+pub struct Dd<M: ProductMode, F: Lane = f64> {
+    pub h: F,
+    pub l: F,
     mode: PhantomData<M>,
 }
 
@@ -127,15 +128,19 @@ impl<M: ProductMode> Dd<M> {
     /// The double `x`, exactly.
     #[inline(always)]
     pub fn from_f64(x: f64) -> Self {
-        Dd {
-            h: x,
-            l: 0.0,
-            mode: PhantomData,
-        }
+        Dd::exact(x)
+    }
+}
+
+impl<M: ProductMode, F: Lane> Dd<M, F> {
+    /// The double (or lanes) `x`, exactly.
+    #[inline(always)]
+    pub fn exact(x: F) -> Self {
+        Dd::new(x, F::splat(0.0))
     }
     /// `h + l` from its parts.
     #[inline(always)]
-    pub fn from_parts(h: f64, l: f64) -> Self {
+    pub fn from_parts(h: F, l: F) -> Self {
         Dd::new(h, l)
     }
     /// The same value renormalised (`|l| ≤ ulp(h)/2`), exactly.
@@ -145,13 +150,16 @@ impl<M: ProductMode> Dd<M> {
         Dd::new(h, l)
     }
     #[inline(always)]
-    fn new(h: f64, l: f64) -> Self {
+    fn new(h: F, l: F) -> Self {
         Dd {
             h,
             l,
             mode: PhantomData,
         }
     }
+}
+
+impl<M: ProductMode> Dd<M> {
     /// True when every part is finite (an overflow makes a part infinite or NaN).
     #[inline(always)]
     pub fn is_finite(&self) -> bool {
@@ -159,14 +167,14 @@ impl<M: ProductMode> Dd<M> {
     }
 }
 
-impl<M: ProductMode> Ring for Dd<M> {
+impl<M: ProductMode, F: Lane> Ring for Dd<M, F> {
     #[inline(always)]
     fn zero() -> Self {
-        Self::from_f64(0.0)
+        Self::exact(F::splat(0.0))
     }
     #[inline(always)]
     fn one() -> Self {
-        Self::from_f64(1.0)
+        Self::exact(F::splat(1.0))
     }
     #[inline(always)]
     fn plus(&self, b: &Self) -> Self {

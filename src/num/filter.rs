@@ -24,6 +24,7 @@
 use std::cmp::Ordering;
 
 use super::dd::{fast_two_sum, two_sum, Dd, ProductMode, ETA, U};
+use super::lane::{Lane, F4};
 use super::round::{next_up, Rounded};
 
 /// Largest group maximum the filter accepts: 2¹⁰⁰.
@@ -60,16 +61,48 @@ pub fn extend_scale(scale: Option<f64>, numerator: f64, divisor: f64) -> Option<
     }
 }
 
+/// [`group_scale`] for any [`Lane`] type: `max |x|` clamped up to [`SCALE_MIN`], and
+/// `+∞` (in place of `None`) when it exceeds [`SCALE_MAX`] or a value is not finite.
+/// An infinite scale poisons every bound built from it (`ε·∞ = ∞`), so every acceptance
+/// test of the filter (`bound < value`) fails and the case goes to the exact tiers;
+/// scales are never NaN, so [`Lane::max`] of scales keeps the poison.
+#[allow(clippy::eq_op)] // `x − x` is 0 for finite x and NaN otherwise: the point
+#[inline(always)]
+pub fn scale_of<F: Lane>(values: &[F]) -> F {
+    let mut m = F::splat(SCALE_MIN);
+    let mut z = F::splat(0.0); // 0, or NaN once a value is ±∞ or NaN (x − x)
+    for &x in values {
+        m = m.max(x.abs());
+        z = z + (x - x);
+    }
+    let ok = m.less_eq(F::splat(SCALE_MAX)) & z.equal(F::splat(0.0));
+    F::select(ok, m, F::splat(f64::INFINITY))
+}
+
+/// [`extend_scale`] for any [`Lane`] type: `max(m, q)` with `q ≥ |d|/divisor`, `+∞`
+/// beyond [`SCALE_MAX`] (as in [`scale_of`]). `q = fl(fl(|d|/divisor)·(1 + 4u))`: where
+/// it matters (`q ≥ m ≥ 2⁻¹⁰⁰`, no underflow) `q ≥ (|d|/divisor)(1 − u)²(1 + 4u) ≥
+/// |d|/divisor`; a NaN quotient (∞/∞: a poisoned divisor) fails the range test.
+#[inline(always)]
+pub fn extend_scale_of<F: Lane>(m: F, d: F, divisor: F) -> F {
+    let q = d.abs() / divisor * F::splat(1.0 + 4.0 * U);
+    F::select(
+        q.less_eq(F::splat(SCALE_MAX)),
+        m.max(q),
+        F::splat(f64::INFINITY),
+    )
+}
+
 /// The absolute error bound `ε · Π factors`, rounded up: the product of at most 10
 /// factors in `[2⁻¹⁰⁰, 2¹⁰⁰]` neither overflows nor underflows, each rounding loses at
-/// most a factor `(1 − u)`, and `(1 + 16u)` covers them.
+/// most a factor `(1 − u)`, and `(1 + 16u)` covers them. Lane-wise for [`F4`](super::lane::F4).
 #[inline(always)]
-pub fn bound(eps: f64, factors: &[f64]) -> f64 {
-    let mut m = eps;
+pub fn bound<F: Lane>(eps: f64, factors: &[F]) -> F {
+    let mut m = F::splat(eps);
     for &f in factors {
-        m *= f;
+        m = m * f;
     }
-    m * (1.0 + 16.0 * U)
+    m * F::splat(1.0 + 16.0 * U)
 }
 
 /// `x + y` rounded up for non-negative `x`, `y` (a safe upper bound).
@@ -93,22 +126,34 @@ pub fn sign_of<M: ProductMode>(x: &Dd<M>, e: f64) -> Option<Ordering> {
 
 /// A denominator prepared once for several [`round_over`] calls: its sign decided, its
 /// reciprocal (for candidates only) and the two factors of [`round_over`]'s error bound
-/// that depend on it alone.
+/// that depend on it alone. With `F = F4`, four denominators; `ok` says which lanes
+/// were accepted.
 #[derive(Debug, Clone, Copy)]
-pub struct Denominator<M: ProductMode> {
-    q: Dd<M>,
-    eq: f64,
-    inv: f64,
+pub struct Denominator<M: ProductMode, F: Lane = f64> {
+    q: Dd<M, F>,
+    eq: F,
+    inv: F,
     /// `|q.l|`.
-    ql: f64,
+    ql: F,
     /// An upper bound on `1/|Q|`.
-    inv_lo: f64,
+    inv_lo: F,
     /// An upper bound on `|1/Q − inv|`.
-    k: f64,
+    k: F,
 }
 
 impl<M: ProductMode> Denominator<M> {
-    /// `None` when `q` is out of the accepted range or its sign is not decided by `eq`.
+    /// `None` when `q` is out of the accepted range or its sign is not decided by `eq`
+    /// (see [`Denominator::prepare`]).
+    #[inline(always)]
+    pub fn new(q: &Dd<M>, eq: f64) -> Option<Self> {
+        let (ok, d) = Self::prepare(q, eq);
+        ok.then_some(d)
+    }
+}
+
+impl<M: ProductMode, F: Lane> Denominator<M, F> {
+    /// The prepared denominator and whether it is accepted (lane-wise): rejected when
+    /// `q` is out of the accepted range or its sign is not decided by `eq`.
     ///
     /// `q` is used as it is (not renormalised: that would delay the reciprocal by a
     /// `two_sum`; the bounds below hold for any split `q = q.h + q.l`). With
@@ -123,27 +168,28 @@ impl<M: ProductMode> Denominator<M> {
     /// `|1/q.h − inv| ≤ u/|q.h| ≤ u|inv|(1 + 2u)`; `k = ((|q.l| + eq)·inv_lo + u)·|inv|·
     /// (1 + 8u)` covers both and its own four roundings (`(1 − u)⁵(1 + 8u) ≥ 1 + 2u`).
     #[inline(always)]
-    pub fn new(q: &Dd<M>, eq: f64) -> Option<Self> {
+    pub fn prepare(q: &Dd<M, F>, eq: F) -> (F::Mask, Self) {
         let qa = q.h.abs();
-        if !(qa >= TINY && qa <= C_MAX && eq <= C_MAX) {
-            return None;
-        }
-        let inv = 1.0 / q.h;
+        let in_range =
+            F::splat(TINY).less_eq(qa) & qa.less_eq(F::splat(C_MAX)) & eq.less_eq(F::splat(C_MAX));
+        let inv = F::splat(1.0) / q.h;
         let ia = inv.abs();
         let ql = q.l.abs();
-        let x = (ql + eq) * ia * (1.0 + 8.0 * U);
-        if !(x <= 0.5) {
-            return None;
-        }
-        let inv_lo = ia * (1.0 + 2.0 * x) * (1.0 + 8.0 * U);
-        Some(Denominator {
-            q: *q,
-            eq,
-            inv,
-            ql,
-            inv_lo,
-            k: ((ql + eq) * inv_lo + U) * ia * (1.0 + 8.0 * U),
-        })
+        let x = (ql + eq) * ia * F::splat(1.0 + 8.0 * U);
+        let ok = in_range & x.less_eq(F::splat(0.5));
+        let inv_lo = ia * (F::splat(1.0) + F::splat(2.0) * x) * F::splat(1.0 + 8.0 * U);
+        let k = ((ql + eq) * inv_lo + F::splat(U)) * ia * F::splat(1.0 + 8.0 * U);
+        (
+            ok,
+            Denominator {
+                q: *q,
+                eq,
+                inv,
+                ql,
+                inv_lo,
+                k,
+            },
+        )
     }
 }
 
@@ -155,36 +201,95 @@ const C_MAX: f64 = 1.0715086071862673e301; // 2^1000
 /// half an ulp, or a quarter of an ulp at a power of two (where the gap below is half
 /// the gap above). A power of two, computed exactly from the exponent bits.
 #[inline(always)]
-fn half_gap(c: f64) -> f64 {
+fn half_gap<F: Lane>(c: F) -> F {
     // 2^e with 2^e ≤ |c| < 2^(e+1): the exponent field alone (exact, no rounding).
-    let p = f64::from_bits(c.to_bits() & (0x7ffu64 << 52));
-    let half_ulp = p * U; // 2^(e−53), exact (normal)
-    if p == c.abs() {
-        half_ulp * 0.5
-    } else {
-        half_ulp
+    let p = c.exponent_power();
+    let half_ulp = p * F::splat(U); // 2^(e−53), exact (normal)
+    F::select(p.equal(c.abs()), half_ulp * F::splat(0.5), half_ulp)
+}
+
+/// A correct rounding decided by the filter, lane-wise: where `ok`, the exact value lies
+/// strictly between `c` and its neighbour on the side of the sign of `t`
+/// ([`Decided::rounded`] builds the [`Rounded`]).
+#[derive(Debug, Clone, Copy)]
+pub struct Decided<F: Lane> {
+    pub ok: F::Mask,
+    pub c: F,
+    pub t: F,
+}
+
+impl<F: Lane> Decided<F> {
+    /// The enclosure `(lo, hi)`: `c` and its neighbour on the side of `t` (meaningful
+    /// where `ok`, i.e. for `|c|` in `[2⁻⁹⁶⁰, 2¹⁰⁰⁰]`, a normal double).
+    ///
+    /// With `p = 2^e ≤ |c| < 2^(e+1)` (the exponent bits, exact), the doubles next to
+    /// `c` are `ulp = p·2⁻⁵²` away, except below `|c|` when `|c| = p` (then `ulp/2`).
+    /// `s = ±ulp` with the sign of `t`; `c + s` is a double (`c` shifted by one unit of
+    /// its last place, or, towards zero at a power of two, `p(1 − 2⁻⁵²)`, which has 52
+    /// significant bits), so the sum is exact; it is the neighbour unless it moved
+    /// towards zero from `|c| = p`, where the neighbour is `c + s/2 = ±p(1 − 2⁻⁵³)`, also
+    /// exact.
+    #[inline(always)]
+    pub fn enclosure(&self) -> (F, F) {
+        let (c, zero) = (self.c, F::splat(0.0));
+        let p = c.exponent_power();
+        let ulp = p * F::splat(2.0 * U);
+        let up = zero.less(self.t);
+        let s = F::select(up, ulp, -ulp);
+        let nb = c + s;
+        let half = nb.abs().less(c.abs()) & p.equal(c.abs());
+        let nb = F::select(half, c + s * F::splat(0.5), nb);
+        (F::select(up, c, nb), F::select(up, nb, c))
     }
 }
 
-/// The rounding of a value known to lie strictly between the finite non-zero double `c`
-/// and its neighbour on the side `above` (towards +∞ when true): the neighbour is the
-/// adjacent bit pattern (magnitude up when the side points away from 0).
-#[inline(always)]
-fn inexact(c: f64, above: bool) -> Rounded {
-    let bits = c.to_bits();
-    let away = above == (c > 0.0);
-    let nb = f64::from_bits(if away { bits + 1 } else { bits - 1 });
-    if above {
+impl Decided<f64> {
+    /// The rounding, when decided.
+    #[inline(always)]
+    pub fn rounded(self) -> Option<Rounded> {
+        self.ok.then(|| self.value())
+    }
+    /// The rounding (meaningful where `ok`).
+    #[inline(always)]
+    pub fn value(self) -> Rounded {
+        let (lo, hi) = self.enclosure();
         Rounded {
-            nearest: c,
-            lo: c,
-            hi: nb,
+            nearest: self.c,
+            lo,
+            hi,
         }
-    } else {
+    }
+}
+
+/// Four decided roundings unpacked for building answers lane by lane.
+#[derive(Debug, Clone, Copy)]
+pub struct RoundedLanes {
+    nearest: [f64; 4],
+    lo: [f64; 4],
+    hi: [f64; 4],
+}
+
+impl RoundedLanes {
+    /// The rounding of lane `i` (meaningful where that lane was decided).
+    #[inline(always)]
+    pub fn get(&self, i: usize) -> Rounded {
         Rounded {
-            nearest: c,
-            lo: nb,
-            hi: c,
+            nearest: self.nearest[i],
+            lo: self.lo[i],
+            hi: self.hi[i],
+        }
+    }
+}
+
+impl Decided<F4> {
+    /// The four roundings (enclosures computed in lanes).
+    #[inline(always)]
+    pub fn lanes(&self) -> RoundedLanes {
+        let (lo, hi) = self.enclosure();
+        RoundedLanes {
+            nearest: self.c.lanes(),
+            lo: lo.lanes(),
+            hi: hi.lanes(),
         }
     }
 }
@@ -218,23 +323,36 @@ fn inexact(c: f64, above: bool) -> Rounded {
 /// gives ∞ or NaN somewhere, and every comparison with NaN fails.
 #[inline(always)]
 pub fn round_over<M: ProductMode>(p: &Dd<M>, ep: f64, d: &Denominator<M>) -> Option<Rounded> {
+    decide_over(p, ep, d).rounded()
+}
+
+/// [`round_over`] for any [`Lane`] type, the decision as a mask (the method and its
+/// proof are those of [`round_over`], lane by lane).
+#[inline(always)]
+pub fn decide_over<M: ProductMode, F: Lane>(
+    p: &Dd<M, F>,
+    ep: F,
+    d: &Denominator<M, F>,
+) -> Decided<F> {
     let c0 = p.h * d.inv;
     let r1 = M::residual(p.h, c0, d.q.h);
     let r2 = M::mul_add(-c0, d.q.l, p.l);
     let r = r1 + r2;
     let delta = r * d.inv;
     let ca = c0.abs();
-    let e_r = ep + ca * d.eq + U * (r1.abs() + ca * d.ql + r2.abs() + r.abs()) + 8.0 * ETA;
-    let eps = (e_r * d.inv_lo + r.abs() * d.k + U * delta.abs()) * (1.0 + 16.0 * U) + 8.0 * ETA;
+    let eta8 = F::splat(8.0 * ETA);
+    let e_r = ep + ca * d.eq + F::splat(U) * (r1.abs() + ca * d.ql + r2.abs() + r.abs()) + eta8;
+    let eps = (e_r * d.inv_lo + r.abs() * d.k + F::splat(U) * delta.abs())
+        * F::splat(1.0 + 16.0 * U)
+        + eta8;
     let (c, t) = fast_two_sum(c0, delta);
     let (ta, cabs) = (t.abs(), c.abs());
-    if !(delta.abs() <= ca && eps < ta && cabs >= C_MIN && cabs <= C_MAX) {
-        return None;
-    }
-    if !((ta + eps) * (1.0 + 4.0 * U) < half_gap(c)) {
-        return None;
-    }
-    Some(inexact(c, t > 0.0))
+    let ok = delta.abs().less_eq(ca)
+        & eps.less(ta)
+        & F::splat(C_MIN).less_eq(cabs)
+        & cabs.less_eq(F::splat(C_MAX))
+        & ((ta + eps) * F::splat(1.0 + 4.0 * U)).less(half_gap(c));
+    Decided { ok, c, t }
 }
 
 /// The exact quotient `P/Q` correctly rounded (see [`round_over`], which does the work
@@ -251,12 +369,19 @@ pub fn round_ratio<M: ProductMode>(p: &Dd<M>, ep: f64, q: &Dd<M>, eq: f64) -> Op
 /// the exact tiers, as in [`round_over`].)
 #[inline(always)]
 pub fn round_value<M: ProductMode>(p: &Dd<M>, ep: f64) -> Option<Rounded> {
+    decide_value(p, ep).rounded()
+}
+
+/// [`round_value`] for any [`Lane`] type, the decision as a mask.
+#[inline(always)]
+pub fn decide_value<M: ProductMode, F: Lane>(p: &Dd<M, F>, ep: F) -> Decided<F> {
     let (c, t) = two_sum(p.h, p.l);
     let (ta, ca) = (t.abs(), c.abs());
-    if !(ep < ta && ca >= C_MIN && ca <= C_MAX && (ta + ep) * (1.0 + 4.0 * U) < half_gap(c)) {
-        return None;
-    }
-    Some(inexact(c, t > 0.0))
+    let ok = ep.less(ta)
+        & F::splat(C_MIN).less_eq(ca)
+        & ca.less_eq(F::splat(C_MAX))
+        & ((ta + ep) * F::splat(1.0 + 4.0 * U)).less(half_gap(c));
+    Decided { ok, c, t }
 }
 
 /// Call `$fast::<WithFma>` through a function compiled with FMA enabled when the CPU has

@@ -10,6 +10,7 @@ pub mod expansion;
 pub mod filter;
 pub mod interval;
 pub mod interval_like;
+pub mod lane;
 mod limbs;
 pub mod midrad;
 pub mod mpfr_interval;

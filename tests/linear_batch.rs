@@ -1,0 +1,123 @@
+//! The batch entry points (`*_batch`: four cases of one shape at a time through the
+//! four-lane filter) answer every case exactly as the scalar entry point does — verdict,
+//! correctly rounded values, enclosures, arithmetic tier — on every generator of
+//! `geocert::robust` interleaved (so that lanes mix shapes, and decided lanes sit next
+//! to lanes that fall through to the exact tiers), in input order, appended after what
+//! `out` already holds.
+
+use geocert::geom::line_plane::{
+    intersect_line_plane, intersect_line_plane_batch, LinePlane, LinePlaneCase,
+};
+use geocert::geom::plane_plane::{intersect_planes, intersect_planes_batch, PlanePlaneCase};
+use geocert::geom::three_planes::{intersect_three_planes, intersect_three_planes_batch};
+use geocert::geom::{Line, Linear, Plane};
+use geocert::robust::case::{same, LinearIn, LinearObj};
+use geocert::robust::{case, Case, Construction, Generator};
+use geocert::Arithmetic;
+
+/// `n` cases per generator, interleaved generator by generator.
+fn cases(c: Construction, n: u64) -> Vec<Case> {
+    (0..n)
+        .flat_map(|i| Generator::ALL.map(|g| case(c, g, 0xBA7C_0000 + i)))
+        .collect()
+}
+
+#[test]
+fn three_planes_batch_equals_scalar() {
+    let triples: Vec<[Plane<f64>; 3]> = cases(Construction::ThreePlanes, 1500)
+        .iter()
+        .map(|c| {
+            let Case::ThreePlanes(p) = c else {
+                unreachable!()
+            };
+            p.map(|q| q.object(same).expect("valid"))
+        })
+        .collect();
+    // What `out` already holds stays in front.
+    let mut out = vec![intersect_three_planes(&triples[0])];
+    intersect_three_planes_batch(&triples, &mut out);
+    assert_eq!(out.len(), triples.len() + 1);
+    let mut filter = 0;
+    for (i, (p, got)) in triples.iter().zip(&out[1..]).enumerate() {
+        let want = intersect_three_planes(p);
+        assert_eq!(got, &want, "case {i}: {p:?}");
+        filter += usize::from(want.arithmetic == Arithmetic::Filter);
+    }
+    // Not vacuous: the generic fifth (at least) went through the filter.
+    assert!(filter >= 1500, "{filter}");
+}
+
+#[test]
+fn line_plane_batch_equals_scalar() {
+    let mut objs: Vec<(LinearObj<f64>, Plane<f64>)> = Vec::new();
+    for (k, c) in cases(Construction::LinePlane, 1500).iter().enumerate() {
+        let Case::LinePlane(l, p) = c else {
+            unreachable!()
+        };
+        let mut lo = l.object(same).expect("valid");
+        // Every third line gets a range, so that some answers are outside the domain.
+        if let (LinearIn::Line { origin, dir }, 0) = (l, k % 3) {
+            let v = |a: [f64; 3]| nalgebra::Vector3::from(a);
+            lo = LinearObj::Line(
+                Line::with_range(v(*origin), v(*dir), Some([-0.5, 0.25])).expect("valid"),
+            );
+        }
+        objs.push((lo, p.object(same).expect("valid")));
+    }
+    let batch: Vec<LinePlaneCase> = objs.iter().map(|(l, p)| (l.linear(), p)).collect();
+    let mut out = Vec::new();
+    intersect_line_plane_batch(&batch, &mut out);
+    assert_eq!(out.len(), batch.len());
+    let (mut filter, mut outside) = (0, 0);
+    for (i, (&(l, p), got)) in batch.iter().zip(&out).enumerate() {
+        let want = intersect_line_plane(l, p);
+        assert_eq!(got, &want, "case {i}: {l:?} {p:?}");
+        filter += usize::from(want.arithmetic == Arithmetic::Filter);
+        outside += usize::from(matches!(
+            (want.arithmetic, &want.value),
+            (Arithmetic::Filter, LinePlane::OutsideDomain(_))
+        ));
+    }
+    assert!(filter >= 1500, "{filter}");
+    assert!(outside >= 100, "{outside}");
+}
+
+#[test]
+fn plane_plane_batch_equals_scalar() {
+    let pairs: Vec<(Plane<f64>, Plane<f64>)> = cases(Construction::PlanePlane, 1500)
+        .iter()
+        .map(|c| {
+            let Case::PlanePlane(a, b) = c else {
+                unreachable!()
+            };
+            (
+                a.object(same).expect("valid"),
+                b.object(same).expect("valid"),
+            )
+        })
+        .collect();
+    let batch: Vec<PlanePlaneCase> = pairs.iter().map(|(a, b)| (a, b)).collect();
+    let mut out = Vec::new();
+    intersect_planes_batch(&batch, &mut out);
+    assert_eq!(out.len(), batch.len());
+    let mut filter = 0;
+    for (i, (&(a, b), got)) in batch.iter().zip(&out).enumerate() {
+        let want = intersect_planes(a, b);
+        assert_eq!(got, &want, "case {i}: {a:?} {b:?}");
+        filter += usize::from(want.arithmetic == Arithmetic::Filter);
+    }
+    assert!(filter >= 1500, "{filter}");
+}
+
+/// An empty batch appends nothing; a batch of one (no full lane group) is the scalar
+/// answer.
+#[test]
+fn small_batches() {
+    let p = Plane::implicit([1.0, 2.0, 3.0].into(), 4.0).unwrap();
+    let l = Line::new([0.5, 0.0, 0.0].into(), [1.0, 1.0, 1.0].into()).unwrap();
+    let mut out = Vec::new();
+    intersect_line_plane_batch(&[], &mut out);
+    assert!(out.is_empty());
+    intersect_line_plane_batch(&[(Linear::Line(&l), &p)], &mut out);
+    assert_eq!(out, vec![intersect_line_plane(Linear::Line(&l), &p)]);
+}
