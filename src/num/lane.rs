@@ -338,10 +338,15 @@ mod imp {
     }
 }
 
-/// Portable lanes (arrays; the same IEEE operations lane by lane). Masks are all-ones
-/// or zero bit patterns, as on x86-64.
 #[cfg(not(target_arch = "x86_64"))]
-mod imp {
+use portable as imp;
+
+/// Portable lanes (arrays; the same IEEE operations lane by lane). Masks are all-ones
+/// or zero bit patterns, as on x86-64. (Compiled on x86-64 for the tests, which check
+/// it against the AVX lanes.)
+#[cfg(any(not(target_arch = "x86_64"), test))]
+#[allow(dead_code)]
+mod portable {
     pub type V = [f64; 4];
     fn zip(a: V, b: V, f: impl Fn(f64, f64) -> f64) -> V {
         [f(a[0], b[0]), f(a[1], b[1]), f(a[2], b[2]), f(a[3], b[3])]
@@ -454,5 +459,40 @@ mod tests {
         assert_eq!(1.5f64.exponent_power(), 1.0);
         assert_eq!((-0.375f64).exponent_power(), 0.25);
         assert_eq!((a.less_eq(b) & a.equal(b)).bits(), 0b0001);
+    }
+
+    /// The portable lanes (other architectures) compute what the AVX lanes compute.
+    #[cfg(target_arch = "x86_64")]
+    #[test]
+    fn portable_lanes_agree_with_avx() {
+        if !available() {
+            return;
+        }
+        let (x, y, z) = (
+            [1.5, -0.0, f64::NAN, 3e-310],
+            [1.5, 2.0, 1.0, -7e300],
+            [0.1, -3.0, 2.5, 1e-320],
+        );
+        let (a, b, c) = (imp::load(x), imp::load(y), imp::load(z));
+        let bits = |v: [f64; 4]| v.map(f64::to_bits);
+        let same = |v: imp::V, w: [f64; 4]| assert_eq!(bits(imp::store(v)), bits(w));
+        same(imp::add(a, b), portable::add(x, y));
+        same(imp::sub(a, b), portable::sub(x, y));
+        same(imp::mul(a, b), portable::mul(x, y));
+        same(imp::div(a, b), portable::div(x, y));
+        same(imp::max(a, b), portable::max(x, y));
+        same(imp::fmadd(a, b, c), portable::fmadd(x, y, z));
+        same(imp::and(a, b), portable::and(x, y));
+        same(imp::andnot(a, b), portable::andnot(x, y));
+        same(imp::xor(a, b), portable::xor(x, y));
+        for (m, n) in [
+            (imp::lt(a, b), portable::lt(x, y)),
+            (imp::le(a, b), portable::le(x, y)),
+            (imp::eq(a, b), portable::eq(x, y)),
+        ] {
+            same(m, n);
+            assert_eq!(imp::movemask(m), portable::movemask(n));
+            same(imp::blend(a, c, m), portable::blend(x, z, n));
+        }
     }
 }
