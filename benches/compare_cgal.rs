@@ -2,18 +2,25 @@
 //! and plane–plane, on generic and on exactly degenerate input (the seeded generators
 //! of `geocert::robust`), timed as plain f64 (`_f64`), geocert certified, geocert exact
 //! rationals (`_exact`, inputs already rational), CGAL Epick, CGAL Epeck with
-//! `to_double` (lazy approximation) and CGAL Epeck with `to_double(exact(x))`.
+//! `to_double` (lazy approximation) and CGAL Epeck with `to_double(exact(x))`; and
+//! geocert certified through the batch entry points (`*_batch`, four cases at a time
+//! in AVX lanes).
 //! Each iteration runs a batch of 64 cases; the tier deciding each case (filter on
 //! generic, integers on degenerate input) is checked before timing. BENCHMARKS.md has
 //! the ratios.
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use geocert::geom::line_plane::{
-    intersect_line_plane, intersect_line_plane_exact, intersect_line_plane_f64,
+    intersect_line_plane, intersect_line_plane_batch, intersect_line_plane_exact,
+    intersect_line_plane_f64, LinePlaneCase,
 };
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_exact, intersect_planes_f64};
+use geocert::geom::plane_plane::{
+    intersect_planes, intersect_planes_batch, intersect_planes_exact, intersect_planes_f64,
+    PlanePlaneCase,
+};
 use geocert::geom::three_planes::{
-    intersect_three_planes, intersect_three_planes_exact, intersect_three_planes_f64,
+    intersect_three_planes, intersect_three_planes_batch, intersect_three_planes_exact,
+    intersect_three_planes_f64,
 };
 use geocert::geom::Plane;
 use geocert::oracle::{epeck_f64, epick, EpeckToDouble, LineInput, PlaneInput, SegmentInput};
@@ -96,6 +103,19 @@ fn three_planes(data: &[Case]) -> Methods<'_> {
                     for x in &f {
                         black_box(intersect_three_planes(x));
                     }
+                }
+            }),
+        ),
+        (
+            "certified_batch",
+            Box::new({
+                let f = f.clone();
+                let out = std::cell::RefCell::new(Vec::with_capacity(BATCH));
+                move || {
+                    let mut out = out.borrow_mut();
+                    out.clear();
+                    intersect_three_planes_batch(black_box(&f), &mut out);
+                    black_box(&*out);
                 }
             }),
         ),
@@ -197,6 +217,22 @@ fn line_plane(data: &[Case]) -> Methods<'_> {
             }),
         ),
         (
+            "certified_batch",
+            Box::new({
+                // (the cases borrow the objects: leaked, once per bench, to build them once)
+                let f: &'static Vec<(LinearObj<f64>, Plane<f64>)> =
+                    Box::leak(Box::new((*f).clone()));
+                let cases: Vec<LinePlaneCase> = f.iter().map(|(l, p)| (l.linear(), p)).collect();
+                let out = std::cell::RefCell::new(Vec::with_capacity(BATCH));
+                move || {
+                    let mut out = out.borrow_mut();
+                    out.clear();
+                    intersect_line_plane_batch(black_box(&cases), &mut out);
+                    black_box(&*out);
+                }
+            }),
+        ),
+        (
             "exact",
             Box::new(move || {
                 for (l, p) in &e {
@@ -267,6 +303,20 @@ fn plane_plane(data: &[Case]) -> Methods<'_> {
                     for [a, b] in f.iter() {
                         black_box(intersect_planes(a, b));
                     }
+                }
+            }),
+        ),
+        (
+            "certified_batch",
+            Box::new({
+                let f: &'static Vec<[Plane<f64>; 2]> = Box::leak(Box::new((*f).clone()));
+                let cases: Vec<PlanePlaneCase> = f.iter().map(|[a, b]| (a, b)).collect();
+                let out = std::cell::RefCell::new(Vec::with_capacity(BATCH));
+                move || {
+                    let mut out = out.borrow_mut();
+                    out.clear();
+                    intersect_planes_batch(black_box(&cases), &mut out);
+                    black_box(&*out);
                 }
             }),
         ),

@@ -11,55 +11,68 @@
 //! is therefore the answer of the scalar entry point for that case (tested in
 //! `tests/linear_batch.rs`), in the order of the input.
 
+use std::mem::MaybeUninit;
+
 /// Number of shape queues (three planes: 2³ shapes).
 const SHAPES: usize = 8;
 
 /// The four-lane filter of one operation: decides `cases[idx[i]]` for the lanes it can,
-/// writes their answers to `out[idx[i]]`, and returns the decided lanes as bits.
-pub(crate) type LaneKernel<C, T> = fn(&[C], [usize; 4], &mut [T]) -> u32;
+/// writes their answers to `out[idx[i]]` — exactly those — and returns the decided lanes
+/// as bits.
+pub(crate) type LaneKernel<C, T> = fn(&[C], [usize; 4], &mut [MaybeUninit<T>]) -> u32;
 
 /// Append the answers for `cases` to `out`, in order. `shape(c) < 8` groups cases that
 /// one lane kernel can take together; `lanes` (when the CPU can run it) decides four
-/// cases of one shape; `scalar` answers one case (always). `placeholder` fills the slots
-/// before they are written (none is left in `out`).
+/// cases of one shape; `scalar` answers one case (the full certified path), and
+/// `undecided` answers a case the lane filter did not decide: the exact tiers, since
+/// the scalar filter computes the same bits and would not decide it either.
 pub(crate) fn run<C, T>(
     cases: &[C],
     out: &mut Vec<T>,
     shape: impl Fn(&C) -> usize,
     lanes: Option<LaneKernel<C, T>>,
     scalar: impl Fn(&C) -> T,
-    placeholder: impl Fn() -> T,
+    undecided: impl Fn(&C) -> T,
 ) {
     let start = out.len();
-    out.resize_with(start + cases.len(), placeholder);
-    let slots = &mut out[start..];
-    let Some(lanes) = lanes else {
-        for (slot, c) in slots.iter_mut().zip(cases) {
-            *slot = scalar(c);
+    out.reserve(cases.len());
+    let slots = &mut out.spare_capacity_mut()[..cases.len()];
+    match lanes {
+        None => {
+            for (slot, c) in slots.iter_mut().zip(cases) {
+                slot.write(scalar(c));
+            }
         }
-        return;
-    };
-    let mut queue = [[0usize; 4]; SHAPES];
-    let mut fill = [0usize; SHAPES];
-    for (i, c) in cases.iter().enumerate() {
-        let s = shape(c);
-        queue[s][fill[s]] = i;
-        fill[s] += 1;
-        if fill[s] == 4 {
-            fill[s] = 0;
-            let decided = lanes(cases, queue[s], slots);
-            for (k, &j) in queue[s].iter().enumerate() {
-                if decided >> k & 1 == 0 {
-                    slots[j] = scalar(&cases[j]);
+        Some(lanes) => {
+            let mut queue = [[0usize; 4]; SHAPES];
+            let mut fill = [0usize; SHAPES];
+            for (i, c) in cases.iter().enumerate() {
+                let s = shape(c);
+                queue[s][fill[s]] = i;
+                fill[s] += 1;
+                if fill[s] == 4 {
+                    fill[s] = 0;
+                    let decided = lanes(cases, queue[s], slots);
+                    for (k, &j) in queue[s].iter().enumerate() {
+                        if decided >> k & 1 == 0 {
+                            slots[j].write(undecided(&cases[j]));
+                        }
+                    }
+                }
+            }
+            for (q, &n) in queue.iter().zip(&fill) {
+                for &j in &q[..n] {
+                    slots[j].write(scalar(&cases[j]));
                 }
             }
         }
     }
-    for (q, &n) in queue.iter().zip(&fill) {
-        for &j in &q[..n] {
-            slots[j] = scalar(&cases[j]);
-        }
-    }
+    // SAFETY: every index `i < cases.len()` entered exactly one queue position (or the
+    // first loop), and every position was written exactly once: by the kernel for its
+    // decided lanes (its contract), else by `undecided`, or by `scalar` for what was
+    // left in the queues. (A panic before this line leaks the written answers; it
+    // cannot expose an unwritten one.)
+    unsafe { out.set_len(start + cases.len()) };
 }
 
 /// The [`LaneKernel`] `$fast4::<WithFma>` compiled with AVX and FMA enabled, when the
@@ -69,16 +82,20 @@ macro_rules! lane_kernel {
     ($fast4:ident, $case:ty, $answer:ty) => {{
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx,fma")]
-        unsafe fn with_avx(c: &[$case], idx: [usize; 4], out: &mut [$answer]) -> u32 {
+        unsafe fn with_avx(
+            c: &[$case],
+            idx: [usize; 4],
+            out: &mut [std::mem::MaybeUninit<$answer>],
+        ) -> u32 {
             $fast4::<$crate::num::dd::WithFma>(c, idx, out)
         }
         #[cfg(target_arch = "x86_64")]
-        fn kernel(c: &[$case], idx: [usize; 4], out: &mut [$answer]) -> u32 {
+        fn kernel(c: &[$case], idx: [usize; 4], out: &mut [std::mem::MaybeUninit<$answer>]) -> u32 {
             // SAFETY: this function is only handed out after `lane::available()`.
             unsafe { with_avx(c, idx, out) }
         }
         #[cfg(not(target_arch = "x86_64"))]
-        fn kernel(c: &[$case], idx: [usize; 4], out: &mut [$answer]) -> u32 {
+        fn kernel(c: &[$case], idx: [usize; 4], out: &mut [std::mem::MaybeUninit<$answer>]) -> u32 {
             $fast4::<$crate::num::dd::WithFma>(c, idx, out)
         }
         let k: Option<$crate::geom::batch::LaneKernel<$case, $answer>> =

@@ -9,6 +9,8 @@
 //! `v = det(s₁, w, c')/(N·c')`, `w = c₀ − s₀`, since `det(s₁, s₂, c') = N·c'`.
 //! `N·c' = 0` exactly: `Contained` if `f(c₀) = 0`, else `Parallel`.
 
+use std::mem::MaybeUninit;
+
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
@@ -338,7 +340,7 @@ pub type LinePlaneCase<'a> = (Linear<'a, f64>, &'a Plane<f64>);
 fn fast4<M: ProductMode>(
     cases: &[LinePlaneCase],
     idx: [usize; 4],
-    out: &mut [Certified<LinePlane<Rounded>>],
+    out: &mut [MaybeUninit<Certified<LinePlane<Rounded>>>],
 ) -> u32 {
     let c = idx.map(|i| &cases[i]);
     let (Some(l), Some(p)) = (
@@ -365,7 +367,7 @@ fn fast4<M: ProductMode>(
         if ok >> i & 1 == 1 {
             let uv = uv.map(|[u, v]| [u.get(i), v.get(i)]);
             let p = [point[0].get(i), point[1].get(i), point[2].get(i)];
-            out[j] = filter_certified(answer(c[i].0, t.get(i), p, uv));
+            out[j].write(filter_certified(answer(c[i].0, t.get(i), p, uv)));
         }
     }
     ok
@@ -392,7 +394,7 @@ pub fn intersect_line_plane_batch(
         batch_shape,
         lanes,
         |&(l, p)| intersect_line_plane(l, p),
-        || filter_certified(LinePlane::Parallel),
+        |&(l, p)| exact_tiers(l, p),
     );
 }
 
@@ -423,13 +425,19 @@ mod tests {
             })
             .collect();
         let cases: Vec<LinePlaneCase> = lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
-        let mut out = vec![filter_certified(LinePlane::Parallel); 4];
+        // Every slot starts initialised (a placeholder the kernel may overwrite), so that
+        // reading any of them back is sound.
+        let mut out: Vec<MaybeUninit<_>> = (0..4)
+            .map(|_| MaybeUninit::new(filter_certified(LinePlane::Parallel)))
+            .collect();
         let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        // SAFETY: every slot was initialised above.
+        let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
         assert_eq!(bits, 0b1011);
         for i in [0, 1, 3] {
-            assert_eq!(out[i], intersect_line_plane(cases[i].0, cases[i].1));
+            assert_eq!(*out[i], intersect_line_plane(cases[i].0, cases[i].1));
         }
-        assert_eq!(out[2], filter_certified(LinePlane::Parallel));
+        assert_eq!(*out[2], filter_certified(LinePlane::Parallel));
     }
 
     /// Derive the filter constants from the formulas and check the written ones cover them.

@@ -19,6 +19,8 @@
 //! `n = 0` exactly: `Coincident` if the planes share a point (`f_a(o_b) = 0`, or
 //! `h_a N_b = h_b N_a` for two implicit planes `N·x = h`), else `Parallel`.
 
+use std::mem::MaybeUninit;
+
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
@@ -520,7 +522,7 @@ pub type PlanePlaneCase<'a> = (&'a Plane<f64>, &'a Plane<f64>);
 fn fast4<M: ProductMode>(
     cases: &[PlanePlaneCase],
     idx: [usize; 4],
-    out: &mut [Certified<PlanePlane<Rounded>>],
+    out: &mut [MaybeUninit<Certified<PlanePlane<Rounded>>>],
 ) -> u32 {
     let c = idx.map(|i| &cases[i]);
     let (Some(a), Some(b)) = (
@@ -541,13 +543,13 @@ fn fast4<M: ProductMode>(
     let (on_a, on_b) = (ParamLanes::new(&dc.on_a), ParamLanes::new(&dc.on_b));
     for (i, &j) in idx.iter().enumerate() {
         if ok >> i & 1 == 1 {
-            out[j] = filter_certified(PlanePlane::Line(PlaneLine {
+            out[j].write(filter_certified(PlanePlane::Line(PlaneLine {
                 point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
                 dir: Vector3::new(dir[0].get(i), dir[1].get(i), dir[2].get(i)),
                 dir_exponent: 0,
                 on_a: on_a.as_ref().map(|p| p.get(i)),
                 on_b: on_b.as_ref().map(|p| p.get(i)),
-            }));
+            })));
         }
     }
     ok
@@ -574,7 +576,7 @@ pub fn intersect_planes_batch(
         batch_shape,
         lanes,
         |&(a, b)| intersect_planes(a, b),
-        || filter_certified(PlanePlane::Parallel),
+        |&(a, b)| exact_tiers(a, b),
     );
 }
 
@@ -619,11 +621,17 @@ mod tests {
         let cases: Vec<PlanePlaneCase> = (0..4)
             .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
             .collect();
-        let mut out = vec![filter_certified(PlanePlane::Parallel); 4];
+        // Every slot starts initialised (a placeholder the kernel may overwrite), so that
+        // reading any of them back is sound.
+        let mut out: Vec<MaybeUninit<_>> = (0..4)
+            .map(|_| MaybeUninit::new(filter_certified(PlanePlane::Parallel)))
+            .collect();
         let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        // SAFETY: every slot was initialised above.
+        let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
         assert_eq!(bits, 0b1101);
         for i in [0, 2, 3] {
-            assert_eq!(out[i], intersect_planes(cases[i].0, cases[i].1));
+            assert_eq!(*out[i], intersect_planes(cases[i].0, cases[i].1));
             assert!(matches!(out[i].value, PlanePlane::Line(_)));
         }
     }

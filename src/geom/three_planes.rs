@@ -20,6 +20,8 @@
 //! third, three planes through one line, two parallel planes and a third crossing them,
 //! and the prism of three pairwise crossing planes with parallel lines.
 
+use std::mem::MaybeUninit;
+
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
@@ -360,7 +362,7 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
 fn fast4<M: ProductMode>(
     cases: &[[Plane<f64>; 3]],
     idx: [usize; 4],
-    out: &mut [Certified<ThreePlanes<Rounded>>],
+    out: &mut [MaybeUninit<Certified<ThreePlanes<Rounded>>>],
 ) -> u32 {
     let c = idx.map(|i| &cases[i]);
     let (Some(r0), Some(r1), Some(r2)) = (
@@ -384,13 +386,13 @@ fn fast4<M: ProductMode>(
     });
     for (i, &j) in idx.iter().enumerate() {
         if ok >> i & 1 == 1 {
-            out[j] = filter_certified(ThreePlanes::Point {
+            out[j].write(filter_certified(ThreePlanes::Point {
                 point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
                 params: each!(k in [0, 1, 2] => match &params[k] {
                     Some([u, v]) => Some(Vector2::new(u.get(i), v.get(i))),
                     None => None,
                 }),
-            });
+            }));
         }
     }
     ok
@@ -417,7 +419,7 @@ pub fn intersect_three_planes_batch(
         batch_shape,
         lanes,
         intersect_three_planes,
-        || filter_certified(ThreePlanes::Empty),
+        exact_tiers,
     );
 }
 
@@ -450,11 +452,17 @@ mod tests {
             })
             .collect();
         cases[1] = [plane(2.0, false), plane(3.0, true), plane(2.0, false)];
-        let mut out = vec![filter_certified(ThreePlanes::Empty); 4];
+        // Every slot starts initialised (a placeholder the kernel may overwrite), so that
+        // reading any of them back is sound.
+        let mut out: Vec<MaybeUninit<_>> = (0..4)
+            .map(|_| MaybeUninit::new(filter_certified(ThreePlanes::Empty)))
+            .collect();
         let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        // SAFETY: every slot was initialised above.
+        let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
         assert_eq!(bits, 0b1101);
         for i in [0, 2, 3] {
-            assert_eq!(out[i], intersect_three_planes(&cases[i]));
+            assert_eq!(*out[i], intersect_three_planes(&cases[i]));
             assert!(matches!(out[i].value, ThreePlanes::Point { .. }));
         }
     }

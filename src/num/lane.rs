@@ -355,7 +355,9 @@ mod portable {
         zip(a, b, |x, y| f64::from_bits(f(x.to_bits(), y.to_bits())))
     }
     fn mask(a: V, b: V, f: impl Fn(f64, f64) -> bool) -> V {
-        zip(a, b, |x, y| f64::from_bits(if f(x, y) { u64::MAX } else { 0 }))
+        zip(a, b, |x, y| {
+            f64::from_bits(if f(x, y) { u64::MAX } else { 0 })
+        })
     }
     pub fn load(x: [f64; 4]) -> V {
         x
