@@ -62,7 +62,9 @@ fn truth(f: Fun, a: f64, b: f64) -> Interval {
         let r = m.mod_u(4);
         match f {
             Fun::Sin if r % 2 == 1 => vals.push(Float::with_val(PREC, if r == 1 { 1 } else { -1 })),
-            Fun::Cos if r % 2 == 0 => vals.push(Float::with_val(PREC, if r == 0 { 1 } else { -1 })),
+            Fun::Cos if r.is_multiple_of(2) => {
+                vals.push(Float::with_val(PREC, if r == 0 { 1 } else { -1 }))
+            }
             Fun::Tan if r % 2 == 1 => return Interval::ENTIRE,
             _ => {}
         }

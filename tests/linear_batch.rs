@@ -109,6 +109,49 @@ fn plane_plane_batch_equals_scalar() {
     assert!(filter >= 1500, "{filter}");
 }
 
+/// Batches of every length up to 20 of one shape (full lane groups of 4 or 8, and
+/// every size of what is left over: case by case, or a lane group padded with copies)
+/// answer as the scalar path does, generic lanes and an undecided one mixed.
+#[test]
+fn every_batch_length() {
+    let mut planes: Vec<[Plane<f64>; 3]> = (0..20)
+        .map(|i| {
+            let c = Case::ThreePlanes(
+                match case(Construction::ThreePlanes, Generator::Generic, i) {
+                    Case::ThreePlanes(p) => p.map(|mut q| {
+                        // one shape for all: parametric planes only
+                        if let geocert::robust::case::PlaneIn::Implicit { normal, d } = q {
+                            q = geocert::robust::case::PlaneIn::Parametric {
+                                origin: [d, 0.5, 0.25],
+                                u: [normal[1], -normal[0], 0.0],
+                                v: [0.0, normal[2], -normal[1]],
+                            };
+                        }
+                        q
+                    }),
+                    _ => unreachable!(),
+                },
+            );
+            let Case::ThreePlanes(p) = c else {
+                unreachable!()
+            };
+            p.map(|q| q.object(same).expect("valid"))
+        })
+        .collect();
+    // Case 5: two coincident planes (D = 0 exactly), which the filter leaves undecided.
+    planes[5][2] = planes[5][0].clone();
+    assert_ne!(
+        intersect_three_planes(&planes[5]).arithmetic,
+        Arithmetic::Filter
+    );
+    for n in 0..=planes.len() {
+        let mut out = Vec::new();
+        intersect_three_planes_batch(&planes[..n], &mut out);
+        let want: Vec<_> = planes[..n].iter().map(intersect_three_planes).collect();
+        assert_eq!(out, want, "length {n}");
+    }
+}
+
 /// An empty batch appends nothing; a batch of one (no full lane group) is the scalar
 /// answer.
 #[test]

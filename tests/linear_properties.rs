@@ -191,7 +191,7 @@ fn perturb(p: &P, which: usize) -> P {
             _ => P::Param(*o, *u, bump(v)),
         },
         P::Implicit(n, d) => {
-            if which % 2 == 0 {
+            if which.is_multiple_of(2) {
                 P::Implicit(bump(n), *d)
             } else {
                 P::Implicit(*n, next_up(*d))
@@ -432,7 +432,7 @@ fn check_line_plane(o: &V, d: &V, range: Option<[f64; 2]>, pl: &P) -> Result<(),
             if let Some(uv) = &x.uv {
                 prop_assert_eq!(pl.at(&uv[0], &uv[1]).unwrap(), p);
             }
-            let inside = range.map_or(true, |[a, b]| q(a) <= x.t && x.t <= q(b));
+            let inside = range.is_none_or(|[a, b]| q(a) <= x.t && x.t <= q(b));
             prop_assert_eq!(inside, matches!(exact, LinePlane::Point(_)));
         }
         LinePlane::Contained => prop_assert!(nd == 0 && dot(&n, &qo) == h),
@@ -525,7 +525,7 @@ mod two_d {
             ]
         }
         fn inside(&self, t: &Q) -> bool {
-            self.carrier().2.map_or(true, |[a, b]| a <= *t && *t <= b)
+            self.carrier().2.is_none_or(|[a, b]| a <= *t && *t <= b)
         }
     }
 

@@ -58,7 +58,7 @@ pub fn decide_cluster<S: System, I: CertInterval>(
     }
     // A perturbation enclosure containing 0 means the roots (if two) are closer than this
     // precision resolves: skip the Newton search, the caller escalates.
-    let resolvable = dr.as_ref().map_or(true, |d| !d.e.contains_zero());
+    let resolvable = dr.as_ref().is_none_or(|d| !d.e.contains_zero());
     if resolvable {
         if let Some(two) = two_roots(sys, &count, &target) {
             return Some(ClusterVerdict::TwoRoots(two));

@@ -192,7 +192,7 @@ fn is_clamped_closed<const D: usize>(
 ) -> bool {
     let (u, p, n) = (knots.knots(), knots.degree(), points.len());
     let clamped = u[..=p].iter().all(|&x| x == u[p]) && u[n..].iter().all(|&x| x == u[n]);
-    clamped && points[0] == points[n - 1] && weights.map_or(true, |w| w[0] == w[n - 1])
+    clamped && points[0] == points[n - 1] && weights.is_none_or(|w| w[0] == w[n - 1])
 }
 
 /// The last `p` control points and weights repeat the first `p`, and the knot
@@ -206,7 +206,7 @@ fn is_periodic_net<const D: usize>(
     let (u, p, n) = (knots.knots(), knots.degree(), points.len());
     let shift = n - p;
     let same_points = (0..p).all(|i| points[i] == points[i + shift]);
-    let same_weights = weights.map_or(true, |w| (0..p).all(|i| w[i] == w[i + shift]));
+    let same_weights = weights.is_none_or(|w| (0..p).all(|i| w[i] == w[i + shift]));
     let q = |x: f64| Rational::from_f64(x).unwrap_or_default();
     let gap = |i: usize| q(u[i + 1]) - q(u[i]);
     let same_gaps = (0..2 * p).all(|i| gap(i) == gap(i + shift));

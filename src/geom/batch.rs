@@ -13,13 +13,26 @@
 
 use std::mem::MaybeUninit;
 
+use crate::num::lane::MAX_LANES;
+
 /// Number of shape queues (three planes: 2³ shapes).
 const SHAPES: usize = 8;
 
-/// The four-lane filter of one operation: decides `cases[idx[i]]` for the lanes it can,
-/// writes their answers to `out[idx[i]]` — exactly those — and returns the decided lanes
-/// as bits.
-pub(crate) type LaneKernel<C, T> = fn(&[C], [usize; 4], &mut [MaybeUninit<T>]) -> u32;
+/// The fewest cases left over in a shape queue that still go through a (padded) lane
+/// group: measured, a lane group of 4 or 8 costs about what three scalar calls cost.
+const PAD_FROM: usize = 3;
+
+/// The lane filter of one operation, `width` lanes wide: decides `cases[idx[i]]`
+/// (`idx.len() == width`) for the lanes it can, writes the answers of the first `real`
+/// lanes among them to `out[idx[i]]` — exactly those (the others are padding) — and
+/// returns those lanes as bits.
+pub(crate) struct LaneKernel<C, T> {
+    pub width: usize,
+    pub run: LaneFn<C, T>,
+}
+
+/// `(cases, idx, real, out) -> decided lanes` (see [`LaneKernel`]).
+pub(crate) type LaneFn<C, T> = fn(&[C], &[usize], usize, &mut [MaybeUninit<T>]) -> u32;
 
 /// Append the answers for `cases` to `out`, in order. `shape(c) < 8` groups cases that
 /// one lane kernel can take together; `lanes` (when the CPU can run it) decides four
@@ -44,25 +57,40 @@ pub(crate) fn run<C, T>(
             }
         }
         Some(lanes) => {
-            let mut queue = [[0usize; 4]; SHAPES];
+            let mut queue = [[0usize; MAX_LANES]; SHAPES];
             let mut fill = [0usize; SHAPES];
+            let width = lanes.width.min(MAX_LANES);
             for (i, c) in cases.iter().enumerate() {
                 let s = shape(c);
                 queue[s][fill[s]] = i;
                 fill[s] += 1;
-                if fill[s] == 4 {
+                if fill[s] == width {
                     fill[s] = 0;
-                    let decided = lanes(cases, queue[s], slots);
-                    for (k, &j) in queue[s].iter().enumerate() {
+                    let decided = (lanes.run)(cases, &queue[s][..width], width, slots);
+                    for (k, &j) in queue[s][..width].iter().enumerate() {
                         if decided >> k & 1 == 0 {
                             slots[j].write(undecided(&cases[j]));
                         }
                     }
                 }
             }
+            // What is left of each shape: a lane group padded with copies of its first
+            // case when that is cheaper than the scalar path (three cases or more), else
+            // case by case.
             for (q, &n) in queue.iter().zip(&fill) {
-                for &j in &q[..n] {
-                    slots[j].write(scalar(&cases[j]));
+                if n >= PAD_FROM {
+                    let mut idx = *q;
+                    idx[n..width].fill(q[0]);
+                    let decided = (lanes.run)(cases, &idx[..width], n, slots);
+                    for (k, &j) in q[..n].iter().enumerate() {
+                        if decided >> k & 1 == 0 {
+                            slots[j].write(undecided(&cases[j]));
+                        }
+                    }
+                } else {
+                    for &j in &q[..n] {
+                        slots[j].write(scalar(&cases[j]));
+                    }
                 }
             }
         }
@@ -75,35 +103,57 @@ pub(crate) fn run<C, T>(
     unsafe { out.set_len(start + cases.len()) };
 }
 
-/// The [`LaneKernel`] `$fast4::<WithFma>` compiled with AVX and FMA enabled, when the
-/// CPU has them (x86-64: runtime detection; [`crate::num::lane::available`]); `None`
-/// otherwise (the batch then runs case by case).
+/// The widest [`LaneKernel`] the CPU can run: `$fast::<WithFma, F8>` compiled with
+/// AVX-512F (x86-64 with AVX-512F), else `$fast::<WithFma, F4>` compiled with AVX and
+/// FMA (x86-64 with both; elsewhere the portable `F4`); `None` on an x86-64 CPU without
+/// AVX and FMA (the batch then runs case by case). Runtime detection, no compile flag.
 macro_rules! lane_kernel {
-    ($fast4:ident, $case:ty, $answer:ty) => {{
+    ($fast:ident, $case:ty, $answer:ty) => {{
+        type Out = [std::mem::MaybeUninit<$answer>];
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx512f,avx,fma")]
+        unsafe fn with_avx512(c: &[$case], idx: &[usize], real: usize, out: &mut Out) -> u32 {
+            $fast::<$crate::num::dd::WithFma, $crate::num::lane8::F8>(c, idx, real, out)
+        }
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx,fma")]
-        unsafe fn with_avx(
-            c: &[$case],
-            idx: [usize; 4],
-            out: &mut [std::mem::MaybeUninit<$answer>],
-        ) -> u32 {
-            $fast4::<$crate::num::dd::WithFma>(c, idx, out)
+        unsafe fn with_avx(c: &[$case], idx: &[usize], real: usize, out: &mut Out) -> u32 {
+            $fast::<$crate::num::dd::WithFma, $crate::num::lane::F4>(c, idx, real, out)
         }
         #[cfg(target_arch = "x86_64")]
-        fn kernel(c: &[$case], idx: [usize; 4], out: &mut [std::mem::MaybeUninit<$answer>]) -> u32 {
-            // SAFETY: this function is only handed out after `lane::available()`.
-            unsafe { with_avx(c, idx, out) }
+        fn wide(c: &[$case], idx: &[usize], real: usize, out: &mut Out) -> u32 {
+            // SAFETY: only handed out after `lane8::available()`.
+            unsafe { with_avx512(c, idx, real, out) }
+        }
+        #[cfg(target_arch = "x86_64")]
+        fn narrow(c: &[$case], idx: &[usize], real: usize, out: &mut Out) -> u32 {
+            // SAFETY: only handed out after `lane::available()`.
+            unsafe { with_avx(c, idx, real, out) }
         }
         #[cfg(not(target_arch = "x86_64"))]
-        fn kernel(c: &[$case], idx: [usize; 4], out: &mut [std::mem::MaybeUninit<$answer>]) -> u32 {
-            $fast4::<$crate::num::dd::WithFma>(c, idx, out)
+        fn narrow(c: &[$case], idx: &[usize], real: usize, out: &mut Out) -> u32 {
+            $fast::<$crate::num::dd::WithFma, $crate::num::lane::F4>(c, idx, real, out)
         }
-        let k: Option<$crate::geom::batch::LaneKernel<$case, $answer>> =
-            if $crate::num::lane::available() {
-                Some(kernel)
-            } else {
-                None
-            };
+        use $crate::geom::batch::LaneKernel;
+        #[cfg(target_arch = "x86_64")]
+        let k: Option<LaneKernel<$case, $answer>> = if $crate::num::lane8::available() {
+            Some(LaneKernel {
+                width: 8,
+                run: wide,
+            })
+        } else if $crate::num::lane::available() {
+            Some(LaneKernel {
+                width: 4,
+                run: narrow,
+            })
+        } else {
+            None
+        };
+        #[cfg(not(target_arch = "x86_64"))]
+        let k: Option<LaneKernel<$case, $answer>> = Some(LaneKernel {
+            width: 4,
+            run: narrow,
+        });
         k
     }};
 }

@@ -25,7 +25,7 @@ use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{bound, decide_over, dispatch_fma, Decided, Denominator};
-use crate::num::lane::Lane;
+use crate::num::lane::{Lane, Wide};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
@@ -333,26 +333,31 @@ fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePla
 /// A case of the batch entry point.
 pub type LinePlaneCase<'a> = (Linear<'a, f64>, &'a Plane<f64>);
 
-/// The filter tier for four cases of one shape ([`batch_shape`]) in lanes: writes the
-/// answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) in lanes: writes
+/// the answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
 #[allow(clippy::manual_map)] // `match`, not a closure: see below
 #[inline(always)]
-fn fast4<M: ProductMode>(
+fn fast_lanes<M: ProductMode, F: Wide>(
     cases: &[LinePlaneCase],
-    idx: [usize; 4],
+    idx: &[usize],
+    real: usize,
     out: &mut [MaybeUninit<Certified<LinePlane<Rounded>>>],
 ) -> u32 {
-    let c = idx.map(|i| &cases[i]);
+    let c = |i: usize| cases[idx[i]];
     let (Some(l), Some(p)) = (
-        RawLine::gather(c.map(|c| c.0)),
-        RawPlane::gather(c.map(|c| c.1)),
+        RawLine::<F>::gather(|i| c(i).0),
+        RawPlane::<F>::gather(|i| c(i).1),
     ) else {
-        return 0;
+        // (not reached: a batch shape has one kind of line and of plane)
+        for (i, &j) in idx.iter().enumerate().take(real) {
+            out[j].write(intersect_line_plane(c(i).0, c(i).1));
+        }
+        return (1 << real) - 1;
     };
     let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p));
-    let ok = dc.ok.bits();
+    let ok = F::bits(dc.ok) & ((1 << real) - 1);
     // (no closures over lanes here: a closure may be compiled out of line, without
-    // this function's AVX target feature)
+    // this function's target features)
     let t = dc.t.lanes();
     let point = [
         dc.point[0].lanes(),
@@ -363,11 +368,11 @@ fn fast4<M: ProductMode>(
         Some([u, v]) => Some([u.lanes(), v.lanes()]),
         None => None,
     };
-    for (i, &j) in idx.iter().enumerate() {
+    for (i, &j) in idx.iter().enumerate().take(real) {
         if ok >> i & 1 == 1 {
             let uv = uv.map(|[u, v]| [u.get(i), v.get(i)]);
             let p = [point[0].get(i), point[1].get(i), point[2].get(i)];
-            out[j].write(filter_certified(answer(c[i].0, t.get(i), p, uv)));
+            out[j].write(filter_certified(answer(c(i).0, t.get(i), p, uv)));
         }
     }
     ok
@@ -387,7 +392,7 @@ pub fn intersect_line_plane_batch(
     cases: &[LinePlaneCase],
     out: &mut Vec<Certified<LinePlane<Rounded>>>,
 ) {
-    let lanes = lane_kernel!(fast4, LinePlaneCase, Certified<LinePlane<Rounded>>);
+    let lanes = lane_kernel!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>);
     batch::run(
         cases,
         out,
@@ -404,12 +409,12 @@ mod tests {
     use crate::geom::Line;
     use crate::num::error_bound::ErrorBound;
 
-    /// The lane kernel itself decides four generic cases (a line, a segment-free batch of
-    /// one shape) and writes the scalar answers; a lane whose scale is out of range (a
+    /// The lane kernel itself decides a lane group of generic cases (lines and one plane) and writes the scalar answers; a lane whose scale is out of range (a
     /// 1e200 origin) is left undecided, without disturbing the others.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        let Some(kernel) = lane_kernel!(fast4, LinePlaneCase, Certified<LinePlane<Rounded>>) else {
+        let Some(kernel) = lane_kernel!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>)
+        else {
             return; // no AVX/FMA: the batch runs case by case
         };
         let plane = Plane::parametric(
@@ -418,26 +423,36 @@ mod tests {
             [-0.4, 1.3, 0.6].into(),
         )
         .unwrap();
-        let lines: Vec<Line<f64>> = (0..4)
+        let w = kernel.width;
+        let lines: Vec<Line<f64>> = (0..w)
             .map(|i| {
-                let o = if i == 2 { 1e200 } else { 0.1 * i as f64 + 0.37 };
+                let o = if i % 4 == 2 {
+                    1e200
+                } else {
+                    0.1 * i as f64 + 0.37
+                };
                 Line::new([o, -2.3, 0.71].into(), [0.9, 0.33 + i as f64, -1.21].into()).unwrap()
             })
             .collect();
         let cases: Vec<LinePlaneCase> = lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
         // Every slot starts initialised (a placeholder the kernel may overwrite), so that
         // reading any of them back is sound.
-        let mut out: Vec<MaybeUninit<_>> = (0..4)
+        let mut out: Vec<MaybeUninit<_>> = (0..w)
             .map(|_| MaybeUninit::new(filter_certified(LinePlane::Parallel)))
             .collect();
-        let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        let idx: Vec<usize> = (0..w).collect();
+        let bits = (kernel.run)(&cases, &idx, w, &mut out);
         // SAFETY: every slot was initialised above.
         let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
-        assert_eq!(bits, 0b1011);
-        for i in [0, 1, 3] {
-            assert_eq!(*out[i], intersect_line_plane(cases[i].0, cases[i].1));
+        for i in 0..w {
+            if i % 4 == 2 {
+                assert_eq!(bits >> i & 1, 0, "lane {i}");
+                assert_eq!(*out[i], filter_certified(LinePlane::Parallel));
+            } else {
+                assert_eq!(bits >> i & 1, 1, "lane {i}");
+                assert_eq!(*out[i], intersect_line_plane(cases[i].0, cases[i].1));
+            }
         }
-        assert_eq!(*out[2], filter_certified(LinePlane::Parallel));
     }
 
     /// Derive the filter constants from the formulas and check the written ones cover them.

@@ -130,7 +130,7 @@ pub(crate) fn terms_from<R: Ring>(a: &Line2Data<R>, b: &Line2Data<R>, delta: R) 
 fn in_range<R: Field>(t: &R, range: &Option<[R; 2]>) -> bool {
     range
         .as_ref()
-        .map_or(true, |[a, b]| t.compare(a).is_ge() && t.compare(b).is_le())
+        .is_none_or(|[a, b]| t.compare(a).is_ge() && t.compare(b).is_le())
 }
 
 /// The exact decision procedure, generic over the field.
@@ -319,9 +319,7 @@ fn fast<M: ProductMode>(a: Linear2<f64>, b: Linear2<f64>) -> Option<Intersection
         round_over(&tm.pnum[1], e_p, &delta)?,
     );
     let inside = |t: &Rounded, r: Option<[f64; 2]>| {
-        r.map_or(true, |[lo, hi]| {
-            t.compare_f64(lo).is_ge() && t.compare_f64(hi).is_le()
-        })
+        r.is_none_or(|[lo, hi]| t.compare_f64(lo).is_ge() && t.compare_f64(hi).is_le())
     };
     Some(if inside(&t1, range_of(&a)) && inside(&t2, range_of(&b)) {
         Intersection2::Point { point, t1, t2 }

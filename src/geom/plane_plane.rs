@@ -37,7 +37,7 @@ use crate::num::expansion::Expansion;
 use crate::num::filter::{
     bound, decide_over, decide_value, dispatch_fma, Decided, Denominator, RoundedLanes,
 };
-use crate::num::lane::{Lane, F4};
+use crate::num::lane::{Lane, Wide};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, scale3, sub3, Field, Ring, V2, V3};
 use crate::num::round::{exponent_of, Rounded};
@@ -495,7 +495,7 @@ struct ParamLanes {
 impl ParamLanes {
     #[allow(clippy::manual_map)] // `match`, not a closure: see below
     #[inline(always)]
-    fn new(p: &Option<ParamDecisions<F4>>) -> Option<ParamLanes> {
+    fn new<F: Wide>(p: &Option<ParamDecisions<F>>) -> Option<ParamLanes> {
         match p {
             Some(p) => Some(ParamLanes {
                 origin: [p.origin[0].lanes(), p.origin[1].lanes()],
@@ -516,24 +516,29 @@ impl ParamLanes {
 /// A case of the batch entry point.
 pub type PlanePlaneCase<'a> = (&'a Plane<f64>, &'a Plane<f64>);
 
-/// The filter tier for four cases of one shape ([`batch_shape`]) in lanes: writes the
-/// answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) in lanes: writes
+/// the answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
 #[inline(always)]
-fn fast4<M: ProductMode>(
+fn fast_lanes<M: ProductMode, F: Wide>(
     cases: &[PlanePlaneCase],
-    idx: [usize; 4],
+    idx: &[usize],
+    real: usize,
     out: &mut [MaybeUninit<Certified<PlanePlane<Rounded>>>],
 ) -> u32 {
-    let c = idx.map(|i| &cases[i]);
+    let c = |i: usize| cases[idx[i]];
     let (Some(a), Some(b)) = (
-        RawPlane::gather([c[0].0, c[1].0, c[2].0, c[3].0]),
-        RawPlane::gather([c[0].1, c[1].1, c[2].1, c[3].1]),
+        RawPlane::<F>::gather(|i| c(i).0),
+        RawPlane::<F>::gather(|i| c(i).1),
     ) else {
-        return 0;
+        // (not reached: a batch shape has one kind per plane)
+        for (i, &j) in idx.iter().enumerate().take(real) {
+            out[j].write(intersect_planes(c(i).0, c(i).1));
+        }
+        return (1 << real) - 1;
     };
-    let dc = decide::<M, F4>(&a, &b);
-    let ok = dc.ok.bits();
-    // (no closures over lanes: they may be compiled without the AVX target feature)
+    let dc = decide::<M, F>(&a, &b);
+    let ok = F::bits(dc.ok) & ((1 << real) - 1);
+    // (no closures over lanes: they may be compiled without the target features)
     let point = [
         dc.point[0].lanes(),
         dc.point[1].lanes(),
@@ -541,7 +546,7 @@ fn fast4<M: ProductMode>(
     ];
     let dir = [dc.dir[0].lanes(), dc.dir[1].lanes(), dc.dir[2].lanes()];
     let (on_a, on_b) = (ParamLanes::new(&dc.on_a), ParamLanes::new(&dc.on_b));
-    for (i, &j) in idx.iter().enumerate() {
+    for (i, &j) in idx.iter().enumerate().take(real) {
         if ok >> i & 1 == 1 {
             out[j].write(filter_certified(PlanePlane::Line(PlaneLine {
                 point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
@@ -569,7 +574,7 @@ pub fn intersect_planes_batch(
     cases: &[PlanePlaneCase],
     out: &mut Vec<Certified<PlanePlane<Rounded>>>,
 ) {
-    let lanes = lane_kernel!(fast4, PlanePlaneCase, Certified<PlanePlane<Rounded>>);
+    let lanes = lane_kernel!(fast_lanes, PlanePlaneCase, Certified<PlanePlane<Rounded>>);
     batch::run(
         cases,
         out,
@@ -602,40 +607,45 @@ pub(crate) fn bound_planes() -> [PlaneData<crate::num::error_bound::ErrorBound>;
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::num::error_bound::ErrorBound;
 
-    /// The lane kernel decides four generic pairs of one shape and writes the scalar
+    /// The lane kernel decides a lane group of generic pairs of one shape and writes the scalar
     /// answers; a lane of two parallel planes is left to the scalar path.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        let Some(kernel) = lane_kernel!(fast4, PlanePlaneCase, Certified<PlanePlane<Rounded>>)
+        let Some(kernel) = lane_kernel!(fast_lanes, PlanePlaneCase, Certified<PlanePlane<Rounded>>)
         else {
             return; // no AVX/FMA
         };
-        let planes: Vec<Plane<f64>> = (0..8)
+        let w = kernel.width;
+        let planes: Vec<Plane<f64>> = (0..2 * w)
             .map(|i| {
                 let s = 0.41 + 1.37 * i as f64;
-                let n = if i == 3 { 0.41 + 1.37 * 2.0 } else { s };
+                // the pair of lane 1 (mod 4) is parallel: planes 2 and 3 (mod 8) share a normal
+                let n = if i % 8 == 3 { s - 1.37 } else { s };
                 Plane::implicit(Vector3::new(1.7 / n, n, 0.3 - n * 1.37), s).unwrap()
             })
             .collect();
-        let cases: Vec<PlanePlaneCase> = (0..4)
+        let cases: Vec<PlanePlaneCase> = (0..w)
             .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
             .collect();
         // Every slot starts initialised (a placeholder the kernel may overwrite), so that
         // reading any of them back is sound.
-        let mut out: Vec<MaybeUninit<_>> = (0..4)
+        let mut out: Vec<MaybeUninit<_>> = (0..w)
             .map(|_| MaybeUninit::new(filter_certified(PlanePlane::Parallel)))
             .collect();
-        let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        let idx: Vec<usize> = (0..w).collect();
+        let bits = (kernel.run)(&cases, &idx, w, &mut out);
         // SAFETY: every slot was initialised above.
         let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
-        assert_eq!(bits, 0b1101);
-        for i in [0, 2, 3] {
-            assert_eq!(*out[i], intersect_planes(cases[i].0, cases[i].1));
-            assert!(matches!(out[i].value, PlanePlane::Line(_)));
+        for i in 0..w {
+            assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
+            if i % 4 != 1 {
+                assert_eq!(*out[i], intersect_planes(cases[i].0, cases[i].1));
+                assert!(matches!(out[i].value, PlanePlane::Line(_)));
+            }
         }
     }
-    use crate::num::error_bound::ErrorBound;
 
     #[test]
     fn direction_range_constants() {

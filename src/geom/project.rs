@@ -425,9 +425,9 @@ fn fast_line<M: ProductMode>(
     let dd = Denominator::new(&tm.dd, e_dd)?;
     let t = round_over(&tm.tnum, bound(EPS_L[0], &[mp, ml]), &dd)?;
     let inside = match line {
-        Linear::Line(l) => l.range().map_or(true, |[a, b]| {
-            t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le()
-        }),
+        Linear::Line(l) => l
+            .range()
+            .is_none_or(|[a, b]| t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le()),
         Linear::Segment(_) => t.compare_f64(0.0).is_ge() && t.compare_f64(1.0).is_le(),
     };
     if !inside {

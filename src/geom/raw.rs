@@ -10,7 +10,7 @@ use super::data::{unit_range, LineData, Linear, PlaneData};
 use super::objects::Plane;
 use crate::num::dd::{Dd, ProductMode};
 use crate::num::filter::{extend_scale_of, scale_of};
-use crate::num::lane::{Lane, F4};
+use crate::num::lane::{Lane, Wide};
 use crate::num::ring::{cross3, each, sub3, V3};
 
 /// A line (origin, direction) or a segment (end points), coordinates as they are given.
@@ -32,10 +32,10 @@ fn v3(v: &Vector3<f64>) -> V3<f64> {
     [v[0], v[1], v[2]]
 }
 
-/// Four vectors in lanes (coordinate `k` of case `i` in lane `i`).
+/// Vectors in lanes (coordinate `k` of case `i` in lane `i`), `v(i)` for lane `i`.
 #[inline(always)]
-fn gather3(vs: [&Vector3<f64>; 4]) -> V3<F4> {
-    each!(k in [0, 1, 2] => F4::new([vs[0][k], vs[1][k], vs[2][k], vs[3][k]]))
+fn gather3<'a, F: Wide>(v: impl Fn(usize) -> &'a Vector3<f64>) -> V3<F> {
+    each!(k in [0, 1, 2] => F::from_fn(|i| v(i)[k]))
 }
 
 #[inline(always)]
@@ -60,21 +60,33 @@ impl RawLine<f64> {
     }
 }
 
-impl RawLine<F4> {
-    /// Four lines, or four segments, in lanes; `None` when the kinds differ.
+impl<F: Wide> RawLine<F> {
+    /// `F::N` lines, or `F::N` segments, in lanes (object of lane `i`: `l(i)`); `None`
+    /// when the kinds differ.
     #[inline(always)]
-    pub(crate) fn gather(ls: [Linear<f64>; 4]) -> Option<Self> {
-        use Linear::{Line as L, Segment as S};
-        match ls {
-            [L(a), L(b), L(c), L(d)] => Some(RawLine::Line {
-                o: gather3([a.origin(), b.origin(), c.origin(), d.origin()]),
-                d: gather3([a.dir(), b.dir(), c.dir(), d.dir()]),
-            }),
-            [S(a), S(b), S(c), S(d)] => Some(RawLine::Segment {
-                a: gather3([a.a(), b.a(), c.a(), d.a()]),
-                b: gather3([a.b(), b.b(), c.b(), d.b()]),
-            }),
-            _ => None,
+    pub(crate) fn gather<'a>(l: impl Fn(usize) -> Linear<'a, f64>) -> Option<Self> {
+        let line = |i: usize| match l(i) {
+            Linear::Line(x) => Some(x),
+            Linear::Segment(_) => None,
+        };
+        let segment = |i: usize| match l(i) {
+            Linear::Segment(x) => Some(x),
+            Linear::Line(_) => None,
+        };
+        if (0..F::N).all(|i| line(i).is_some()) {
+            let q = |i: usize| line(i).expect("checked");
+            Some(RawLine::Line {
+                o: gather3(|i| q(i).origin()),
+                d: gather3(|i| q(i).dir()),
+            })
+        } else if (0..F::N).all(|i| segment(i).is_some()) {
+            let q = |i: usize| segment(i).expect("checked");
+            Some(RawLine::Segment {
+                a: gather3(|i| q(i).a()),
+                b: gather3(|i| q(i).b()),
+            })
+        } else {
+            None
         }
     }
 }
@@ -132,40 +144,34 @@ impl RawPlane<f64> {
     }
 }
 
-impl RawPlane<F4> {
-    /// Four parametric, or four implicit, planes in lanes; `None` when the kinds differ.
+impl<F: Wide> RawPlane<F> {
+    /// `F::N` parametric, or `F::N` implicit, planes in lanes (plane of lane `i`:
+    /// `p(i)`); `None` when the kinds differ.
     #[inline(always)]
-    pub(crate) fn gather(ps: [&Plane<f64>; 4]) -> Option<Self> {
-        use Plane::{Implicit as I, Parametric as P};
-        match ps {
-            [P {
-                origin: o0,
-                u: u0,
-                v: v0,
-            }, P {
-                origin: o1,
-                u: u1,
-                v: v1,
-            }, P {
-                origin: o2,
-                u: u2,
-                v: v2,
-            }, P {
-                origin: o3,
-                u: u3,
-                v: v3,
-            }] => Some(RawPlane::Param {
-                o: gather3([o0, o1, o2, o3]),
-                u: gather3([u0, u1, u2, u3]),
-                v: gather3([v0, v1, v2, v3]),
-            }),
-            [I { normal: n0, d: d0 }, I { normal: n1, d: d1 }, I { normal: n2, d: d2 }, I { normal: n3, d: d3 }] => {
-                Some(RawPlane::Implicit {
-                    n: gather3([n0, n1, n2, n3]),
-                    d: F4::new([*d0, *d1, *d2, *d3]),
-                })
-            }
-            _ => None,
+    pub(crate) fn gather<'a>(p: impl Fn(usize) -> &'a Plane<f64>) -> Option<Self> {
+        let param = |i: usize| match p(i) {
+            Plane::Parametric { origin, u, v } => Some((origin, u, v)),
+            Plane::Implicit { .. } => None,
+        };
+        let implicit = |i: usize| match p(i) {
+            Plane::Implicit { normal, d } => Some((normal, *d)),
+            Plane::Parametric { .. } => None,
+        };
+        if (0..F::N).all(|i| param(i).is_some()) {
+            let q = |i: usize| param(i).expect("checked");
+            Some(RawPlane::Param {
+                o: gather3(|i| q(i).0),
+                u: gather3(|i| q(i).1),
+                v: gather3(|i| q(i).2),
+            })
+        } else if (0..F::N).all(|i| implicit(i).is_some()) {
+            let q = |i: usize| implicit(i).expect("checked");
+            Some(RawPlane::Implicit {
+                n: gather3(|i| q(i).0),
+                d: F::from_fn(|i| q(i).1),
+            })
+        } else {
+            None
         }
     }
 }

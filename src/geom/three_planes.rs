@@ -40,7 +40,7 @@ use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::expansion::Expansion;
 use crate::num::filter::{bound, decide_over, dispatch_fma, Decided, Denominator, SCALE_MIN};
-use crate::num::lane::{Lane, F4};
+use crate::num::lane::{Lane, Wide};
 use crate::num::ratio::Ratio;
 use crate::num::ring::{cross3, dot3, each, is_zero3, Field, Ring, V2, V3};
 use crate::num::round::Rounded;
@@ -355,26 +355,31 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     })
 }
 
-/// The filter tier for four cases of one shape ([`batch_shape`]) in lanes: writes the
-/// answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) in lanes: writes
+/// the answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
 #[allow(clippy::manual_map)] // `match`, not a closure: see below
 #[inline(always)]
-fn fast4<M: ProductMode>(
+fn fast_lanes<M: ProductMode, F: Wide>(
     cases: &[[Plane<f64>; 3]],
-    idx: [usize; 4],
+    idx: &[usize],
+    real: usize,
     out: &mut [MaybeUninit<Certified<ThreePlanes<Rounded>>>],
 ) -> u32 {
-    let c = idx.map(|i| &cases[i]);
+    let c = |i: usize| &cases[idx[i]];
     let (Some(r0), Some(r1), Some(r2)) = (
-        RawPlane::gather([&c[0][0], &c[1][0], &c[2][0], &c[3][0]]),
-        RawPlane::gather([&c[0][1], &c[1][1], &c[2][1], &c[3][1]]),
-        RawPlane::gather([&c[0][2], &c[1][2], &c[2][2], &c[3][2]]),
+        RawPlane::<F>::gather(|i| &c(i)[0]),
+        RawPlane::<F>::gather(|i| &c(i)[1]),
+        RawPlane::<F>::gather(|i| &c(i)[2]),
     ) else {
-        return 0;
+        // (not reached: a batch shape has one kind per plane)
+        for (i, &j) in idx.iter().enumerate().take(real) {
+            out[j].write(intersect_three_planes(c(i)));
+        }
+        return (1 << real) - 1;
     };
-    let dc = decide::<M, F4>(&[r0, r1, r2]);
-    let ok = dc.ok.bits();
-    // (no closures over lanes: they may be compiled without the AVX target feature)
+    let dc = decide::<M, F>(&[r0, r1, r2]);
+    let ok = F::bits(dc.ok) & ((1 << real) - 1);
+    // (no closures over lanes: they may be compiled without the target features)
     let point = [
         dc.point[0].lanes(),
         dc.point[1].lanes(),
@@ -384,7 +389,7 @@ fn fast4<M: ProductMode>(
         Some([u, v]) => Some([u.lanes(), v.lanes()]),
         None => None,
     });
-    for (i, &j) in idx.iter().enumerate() {
+    for (i, &j) in idx.iter().enumerate().take(real) {
         if ok >> i & 1 == 1 {
             out[j].write(filter_certified(ThreePlanes::Point {
                 point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
@@ -412,7 +417,7 @@ pub fn intersect_three_planes_batch(
     cases: &[[Plane<f64>; 3]],
     out: &mut Vec<Certified<ThreePlanes<Rounded>>>,
 ) {
-    let lanes = lane_kernel!(fast4, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>);
+    let lanes = lane_kernel!(fast_lanes, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>);
     batch::run(
         cases,
         out,
@@ -436,34 +441,42 @@ mod tests {
         }
     }
 
-    /// The lane kernel decides four generic triples of one shape and writes the scalar
+    /// The lane kernel decides a lane group of generic triples of one shape and writes the scalar
     /// answers; an exactly degenerate lane (three times the same plane) is left to the
     /// scalar path.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        let Some(kernel) = lane_kernel!(fast4, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>)
+        let Some(kernel) =
+            lane_kernel!(fast_lanes, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>)
         else {
             return; // no AVX/FMA
         };
-        let mut cases: Vec<[Plane<f64>; 3]> = (0..4)
+        let w = kernel.width;
+        let cases: Vec<[Plane<f64>; 3]> = (0..w)
             .map(|i| {
                 let s = 0.37 + i as f64;
-                [plane(s, false), plane(s * 1.9, true), plane(-s, false)]
+                if i % 4 == 1 {
+                    [plane(2.0, false), plane(3.0, true), plane(2.0, false)]
+                } else {
+                    [plane(s, false), plane(s * 1.9, true), plane(-s, false)]
+                }
             })
             .collect();
-        cases[1] = [plane(2.0, false), plane(3.0, true), plane(2.0, false)];
         // Every slot starts initialised (a placeholder the kernel may overwrite), so that
         // reading any of them back is sound.
-        let mut out: Vec<MaybeUninit<_>> = (0..4)
+        let mut out: Vec<MaybeUninit<_>> = (0..w)
             .map(|_| MaybeUninit::new(filter_certified(ThreePlanes::Empty)))
             .collect();
-        let bits = kernel(&cases, [0, 1, 2, 3], &mut out);
+        let idx: Vec<usize> = (0..w).collect();
+        let bits = (kernel.run)(&cases, &idx, w, &mut out);
         // SAFETY: every slot was initialised above.
         let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
-        assert_eq!(bits, 0b1101);
-        for i in [0, 2, 3] {
-            assert_eq!(*out[i], intersect_three_planes(&cases[i]));
-            assert!(matches!(out[i].value, ThreePlanes::Point { .. }));
+        for i in 0..w {
+            assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
+            if i % 4 != 1 {
+                assert_eq!(*out[i], intersect_three_planes(&cases[i]));
+                assert!(matches!(out[i].value, ThreePlanes::Point { .. }));
+            }
         }
     }
     use crate::geom::plane_plane::bound_planes;

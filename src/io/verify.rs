@@ -297,7 +297,7 @@ fn compare(
             if d2 <= tol2 {
                 matched[j] = true;
             }
-            if best.as_ref().map_or(true, |b| d2 < *b) {
+            if best.as_ref().is_none_or(|b| d2 < *b) {
                 best = Some(d2);
             }
         }

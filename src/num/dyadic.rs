@@ -480,7 +480,7 @@ mod tests {
         /// Doubles of every shape: full or short significands, exponents within ±40.
         fn f(&mut self) -> f64 {
             let r = self.next();
-            let m = if r % 3 == 0 {
+            let m = if r.is_multiple_of(3) {
                 (r >> 40) as f64
             } else {
                 (r >> 11) as f64

@@ -24,7 +24,7 @@
 use std::cmp::Ordering;
 
 use super::dd::{fast_two_sum, two_sum, Dd, ProductMode, ETA, U};
-use super::lane::{Lane, F4};
+use super::lane::{Lane, Wide, MAX_LANES};
 use super::round::{next_up, Rounded};
 
 /// Largest group maximum the filter accepts: 2¹⁰⁰.
@@ -261,12 +261,12 @@ impl Decided<f64> {
     }
 }
 
-/// Four decided roundings unpacked for building answers lane by lane.
+/// Decided roundings of several lanes unpacked for building answers lane by lane.
 #[derive(Debug, Clone, Copy)]
 pub struct RoundedLanes {
-    nearest: [f64; 4],
-    lo: [f64; 4],
-    hi: [f64; 4],
+    nearest: [f64; MAX_LANES],
+    lo: [f64; MAX_LANES],
+    hi: [f64; MAX_LANES],
 }
 
 impl RoundedLanes {
@@ -281,16 +281,20 @@ impl RoundedLanes {
     }
 }
 
-impl Decided<F4> {
-    /// The four roundings (enclosures computed in lanes).
+impl<F: Wide> Decided<F> {
+    /// The roundings of every lane (enclosures computed in lanes).
     #[inline(always)]
     pub fn lanes(&self) -> RoundedLanes {
         let (lo, hi) = self.enclosure();
-        RoundedLanes {
-            nearest: self.c.lanes(),
-            lo: lo.lanes(),
-            hi: hi.lanes(),
-        }
+        let mut r = RoundedLanes {
+            nearest: [0.0; MAX_LANES],
+            lo: [0.0; MAX_LANES],
+            hi: [0.0; MAX_LANES],
+        };
+        self.c.store(&mut r.nearest);
+        lo.store(&mut r.lo);
+        hi.store(&mut r.hi);
+        r
     }
 }
 

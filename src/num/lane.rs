@@ -100,7 +100,23 @@ impl Lane for f64 {
     }
 }
 
-const EXPONENT_BITS: u64 = 0x7ff << 52;
+pub(crate) const EXPONENT_BITS: u64 = 0x7ff << 52;
+
+/// The most lanes of any [`Wide`] type.
+pub const MAX_LANES: usize = 8;
+
+/// A lane type of several cases: [`F4`] (AVX) or, on x86-64, [`F8`](super::lane8::F8)
+/// (AVX-512).
+pub trait Wide: Lane {
+    /// The number of lanes (at most [`MAX_LANES`]).
+    const N: usize;
+    /// Lane `i` set to `f(i)`, for `i < N`.
+    fn from_fn(f: impl FnMut(usize) -> f64) -> Self;
+    /// The lanes into `out[..N]`.
+    fn store(self, out: &mut [f64; MAX_LANES]);
+    /// A mask as bits (bit `i` set when lane `i` is true).
+    fn bits(m: Self::Mask) -> u32;
+}
 
 /// Four `f64` lanes: one AVX register on x86-64, an array elsewhere.
 ///
@@ -235,6 +251,22 @@ impl Lane for F4 {
     #[inline(always)]
     fn exponent_power(self) -> Self {
         F4(imp::and(self.0, imp::splat(f64::from_bits(EXPONENT_BITS))))
+    }
+}
+
+impl Wide for F4 {
+    const N: usize = 4;
+    #[inline(always)]
+    fn from_fn(mut f: impl FnMut(usize) -> f64) -> Self {
+        F4::new([f(0), f(1), f(2), f(3)])
+    }
+    #[inline(always)]
+    fn store(self, out: &mut [f64; MAX_LANES]) {
+        out[..4].copy_from_slice(&self.lanes());
+    }
+    #[inline(always)]
+    fn bits(m: M4) -> u32 {
+        m.bits()
     }
 }
 

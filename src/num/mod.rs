@@ -11,6 +11,8 @@ pub mod filter;
 pub mod interval;
 pub mod interval_like;
 pub mod lane;
+#[cfg(target_arch = "x86_64")]
+pub mod lane8;
 mod limbs;
 pub mod midrad;
 pub mod mpfr_interval;

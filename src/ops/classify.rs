@@ -148,7 +148,7 @@ fn nearest(p: &V3<Rational>, shell: &Polyhedron) -> (V3<Rational>, Rational) {
     let mut offer = |x: V3<Rational>| {
         let w = sub3(p, &x);
         let d2 = dot3(&w, &w);
-        if best.as_ref().map_or(true, |(_, b)| d2 < *b) {
+        if best.as_ref().is_none_or(|(_, b)| d2 < *b) {
             best = Some((x, d2));
         }
     };

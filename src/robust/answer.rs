@@ -123,7 +123,7 @@ pub fn rounded_truth(truth: &Answer<Rational>) -> Vec<Rounded> {
 /// either order.
 fn orders<S: Clone>(kind: Kind, coords: &[S]) -> Vec<Vec<S>> {
     let mut all = vec![coords.to_vec()];
-    if kind == Kind::Segment && coords.len() % 2 == 0 {
+    if kind == Kind::Segment && coords.len().is_multiple_of(2) {
         let h = coords.len() / 2;
         all.push(coords[h..].iter().chain(&coords[..h]).cloned().collect());
     }

@@ -128,7 +128,7 @@ pub(crate) fn isolate(
     if p.degree() == 0 {
         return Vec::new();
     }
-    let in_range = |x: &Rational| lo.map_or(true, |l| x >= l) && hi.map_or(true, |h| x <= h);
+    let in_range = |x: &Rational| lo.is_none_or(|l| x >= l) && hi.is_none_or(|h| x <= h);
     let zero_root = p.c[0].cmp0() == Ordering::Equal;
     if zero_root && in_range(&Rational::new()) {
         out.push((Rational::new(), Isolated::Exact(Rational::new())));

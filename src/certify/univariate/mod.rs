@@ -154,8 +154,8 @@ fn roots_between(p: &Polynomial, lo: Option<&Rational>, hi: Option<&Rational>) -
             "every root of the product is a root of a factor"
         );
         if let Some(root) = root {
-            let inside = lo.map_or(true, |l| root.compare(l) != Ordering::Less)
-                && hi.map_or(true, |h| root.compare(h) != Ordering::Greater);
+            let inside = lo.is_none_or(|l| root.compare(l) != Ordering::Less)
+                && hi.is_none_or(|h| root.compare(h) != Ordering::Greater);
             if inside {
                 out.push(root);
             }

@@ -31,7 +31,7 @@ impl Rng {
     /// returns a special value (0, ±MIN_POSITIVE, ±smallest subnormal, ±MAX, ±1).
     pub(crate) fn double(&mut self, emin: i32, emax: i32) -> f64 {
         let r = self.next_u64();
-        if r % 16 == 0 {
+        if r.is_multiple_of(16) {
             let specials = [
                 0.0,
                 f64::MIN_POSITIVE,
