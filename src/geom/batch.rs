@@ -1,15 +1,17 @@
-//! Batch entry points of the linear kernel: many cases certified in one call, four at a
-//! time through the filter ([`crate::num::lane::F4`] lanes).
+//! Batch entry points of the linear kernel: many cases certified in one call, eight
+//! (AVX-512, [`crate::num::lane8::F8`]) or four (AVX, [`crate::num::lane::F4`]) at a
+//! time through the filter.
 //!
 //! The cases are queued by *shape* (line or segment, parametric or implicit plane: the
-//! formulas differ by shape, the lanes must not); each time four cases of one shape are
-//! queued they go through the four-lane filter, which is the scalar filter's formula
-//! instantiated for `F4` — every lane computes, bit for bit, what the scalar filter
-//! computes for its case, so a lane decides exactly when the scalar filter would. Lanes
-//! the filter cannot decide, the cases left over at the end, and every case on a CPU
-//! without AVX and FMA take the scalar path (filter, then the exact tiers). Each answer
-//! is therefore the answer of the scalar entry point for that case (tested in
-//! `tests/linear_batch.rs`), in the order of the input.
+//! formulas differ by shape, the lanes must not); each time a lane group of one shape
+//! is full it goes through the lane filter, which is the scalar filter's formula
+//! instantiated for the lane type — every lane computes, bit for bit, what the scalar
+//! filter computes for its case, so a lane decides exactly when the scalar filter
+//! would. Lanes the filter cannot decide go to the exact tiers; what is left over at the
+//! end goes through a padded lane group (three cases or more) or case by case; on a CPU
+//! without AVX and FMA every case takes the scalar path. Each answer is therefore the
+//! answer of the scalar entry point for that case (tested in `tests/linear_batch.rs`),
+//! in the order of the input.
 
 use std::mem::MaybeUninit;
 
@@ -35,8 +37,8 @@ pub(crate) struct LaneKernel<C, T> {
 pub(crate) type LaneFn<C, T> = fn(&[C], &[usize], usize, &mut [MaybeUninit<T>]) -> u32;
 
 /// Append the answers for `cases` to `out`, in order. `shape(c) < 8` groups cases that
-/// one lane kernel can take together; `lanes` (when the CPU can run it) decides four
-/// cases of one shape; `scalar` answers one case (the full certified path), and
+/// one lane kernel can take together; `lanes` (when the CPU can run it) decides a lane
+/// group of one shape; `scalar` answers one case (the full certified path), and
 /// `undecided` answers a case the lane filter did not decide: the exact tiers, since
 /// the scalar filter computes the same bits and would not decide it either.
 pub(crate) fn run<C, T>(
@@ -97,9 +99,10 @@ pub(crate) fn run<C, T>(
     }
     // SAFETY: every index `i < cases.len()` entered exactly one queue position (or the
     // first loop), and every position was written exactly once: by the kernel for its
-    // decided lanes (its contract), else by `undecided`, or by `scalar` for what was
-    // left in the queues. (A panic before this line leaks the written answers; it
-    // cannot expose an unwritten one.)
+    // decided real lanes (its contract; a padded group's real lanes are the distinct
+    // leftovers, its padding is never written), else by `undecided`, or by `scalar`.
+    // (A panic before this line leaks the written answers; it cannot expose an
+    // unwritten one.)
     unsafe { out.set_len(start + cases.len()) };
 }
 

@@ -237,7 +237,7 @@ const EPS_DEN: f64 = 452.0 * U * U;
 const EPS_PNUM: f64 = 2580.0 * U * U;
 const EPS_UVNUM: f64 = 1198.0 * U * U;
 
-/// The filter's scales of one case or four lanes, `[m_P, m_L, m_G, m_G^k]`. Groups:
+/// The filter's scales of one case or a lane group, `[m_P, m_L, m_G, m_G^k]`. Groups:
 /// positions `P` (the line's origin or end points, the plane's origin, an implicit
 /// plane's `|d|/m_n`), the line direction `L` (`P` for a segment, whose direction is
 /// `b − a`), the plane vectors `G` (`u`, `v`, or the normal). Degrees (`k = 2`
@@ -251,7 +251,7 @@ fn scales<F: Lane>(line: &RawLine<F>, plane: &RawPlane<F>) -> [F; 4] {
     [mp, ml, mg, gk]
 }
 
-/// The filter's decisions for one case or four lanes: `ok` where `N·c'` and every
+/// The filter's decisions for one case or a lane group: `ok` where `N·c'` and every
 /// output were decided.
 struct Decisions<F: Lane> {
     ok: F::Mask,
@@ -260,7 +260,7 @@ struct Decisions<F: Lane> {
     uv: Option<[Decided<F>; 2]>,
 }
 
-/// The filter tier, written once for one case (`F = f64`) and four lanes (`F4`): the
+/// The filter tier, written once for one case (`F = f64`) and lane groups (`F4`, `F8`): the
 /// formulas of [`terms_from`] in double-double, `N·c'` prepared as the denominator (its
 /// sign decided: the verdict), every output's correct rounding decided against the
 /// bounds `ε·scales` of the constants above.
@@ -326,8 +326,18 @@ fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePla
     if !dc.ok {
         return None;
     }
-    let uv = dc.uv.map(|[u, v]| [u.value(), v.value()]);
-    Some(answer(line, dc.t.value(), dc.point.map(Decided::value), uv))
+    // (no array `map`: its closure may be compiled out of line)
+    let uv = match dc.uv {
+        Some([u, v]) => Some([u.value(), v.value()]),
+        None => None,
+    };
+    let [x, y, z] = dc.point;
+    Some(answer(
+        line,
+        dc.t.value(),
+        [x.value(), y.value(), z.value()],
+        uv,
+    ))
 }
 
 /// A case of the batch entry point.
@@ -385,8 +395,8 @@ fn batch_shape((l, p): &LinePlaneCase) -> usize {
 }
 
 /// Certified line ∩ plane for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_line_plane`] gives for each case (see [`super::batch`]: four cases
-/// of one shape at a time through the four-lane filter). `out` only allocates when it
+/// answer [`intersect_line_plane`] gives for each case (see [`super::batch`]: lane groups
+/// of one shape through the lane filter). `out` only allocates when it
 /// grows.
 pub fn intersect_line_plane_batch(
     cases: &[LinePlaneCase],

@@ -377,7 +377,7 @@ pub(crate) const EPS_PNUM: f64 = 271491.0 * U * U;
 pub(crate) const EPS_PARAM: f64 = 134081.0 * U * U;
 pub(crate) const EPS_PDIR: f64 = 173.0 * U * U;
 
-/// The filter's decisions for one case or four lanes: `ok` where `|n|²` and every output
+/// The filter's decisions for one case or a lane group: `ok` where `|n|²` and every output
 /// were decided.
 struct Decisions<F: Lane> {
     ok: F::Mask,
@@ -393,7 +393,22 @@ struct ParamDecisions<F: Lane> {
     dir: [Decided<F>; 2],
 }
 
-/// The filter tier, written once for one case (`F = f64`) and four lanes (`F4`): groups
+impl ParamDecisions<f64> {
+    /// The rounded parameter line (meaningful where decided).
+    #[allow(clippy::manual_map)] // `match`, not a closure (see `fast`)
+    #[inline(always)]
+    fn value(p: Option<Self>) -> Option<ParamLine<Rounded>> {
+        match p {
+            Some(p) => Some(ParamLine {
+                origin: Vector2::new(p.origin[0].value(), p.origin[1].value()),
+                dir: Vector2::new(p.dir[0].value(), p.dir[1].value()),
+            }),
+            None => None,
+        }
+    }
+}
+
+/// The filter tier, written once for one case (`F = f64`) and lane groups (`F4`, `F8`): groups
 /// `P` (origins, `|d|/m_n`), `G_a`, `G_b`; degrees (`k = 2` parametric, 1 implicit):
 /// `n`: `G_a^ka G_b^kb`; `|n|²`: twice that; point numerators: `P G_a^2ka G_b^2kb`;
 /// parameter numerators on `a`: `P G_a^(ka+1) G_b^2kb` (on `b` symmetrically);
@@ -471,18 +486,14 @@ fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Roun
     if !dc.ok {
         return None;
     }
-    let param = |p: Option<ParamDecisions<f64>>| {
-        p.map(|p| ParamLine {
-            origin: Vector2::new(p.origin[0].value(), p.origin[1].value()),
-            dir: Vector2::new(p.dir[0].value(), p.dir[1].value()),
-        })
-    };
+    // (no array `map`: its closure may be compiled out of line)
+    let v3 = |[x, y, z]: [Decided<f64>; 3]| Vector3::new(x.value(), y.value(), z.value());
     Some(PlaneLine {
-        point: Vector3::from(dc.point.map(Decided::value)),
-        dir: Vector3::from(dc.dir.map(Decided::value)),
+        point: v3(dc.point),
+        dir: v3(dc.dir),
         dir_exponent: 0,
-        on_a: param(dc.on_a),
-        on_b: param(dc.on_b),
+        on_a: ParamDecisions::value(dc.on_a),
+        on_b: ParamDecisions::value(dc.on_b),
     })
 }
 
@@ -567,8 +578,8 @@ fn batch_shape((a, b): &PlanePlaneCase) -> usize {
 }
 
 /// Certified plane ∩ plane for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_planes`] gives for each pair (see [`super::batch`]: four pairs of
-/// one shape at a time through the four-lane filter). `out` only allocates when it
+/// answer [`intersect_planes`] gives for each pair (see [`super::batch`]: lane groups of
+/// pairs of one shape through the lane filter). `out` only allocates when it
 /// grows.
 pub fn intersect_planes_batch(
     cases: &[PlanePlaneCase],

@@ -297,7 +297,7 @@ const EPS_DET: f64 = 5598.0 * U * U;
 const EPS_PNUM: f64 = 66138.0 * U * U;
 const EPS_PARAM: f64 = 20027.0 * U * U;
 
-/// The filter's decisions for one case or four lanes: `ok` where `D` and every output
+/// The filter's decisions for one case or a lane group: `ok` where `D` and every output
 /// were decided.
 struct Decisions<F: Lane> {
     ok: F::Mask,
@@ -305,8 +305,8 @@ struct Decisions<F: Lane> {
     params: [Option<[Decided<F>; 2]>; 3],
 }
 
-/// The filter tier (point case only), written once for one case (`F = f64`) and four
-/// lanes (`F4`). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`, `G_2`; with
+/// The filter tier (point case only), written once for one case (`F = f64`) and lane
+/// groups (`F4`, `F8`). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`, `G_2`; with
 /// `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`: `S₀S₁S₂`;
 /// point numerators: `P S₀S₁S₂`; parameter numerators of plane `k`: `P S_i S_j m_k`.
 #[inline(always)]
@@ -347,11 +347,14 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     if !dc.ok {
         return None;
     }
+    // (no array `map`: its closure may be compiled out of line, here a measured 1.6×)
+    let [x, y, z] = dc.point;
     Some(ThreePlanes::Point {
-        point: Vector3::from(dc.point.map(Decided::value)),
-        params: dc
-            .params
-            .map(|q| q.map(|[u, v]| Vector2::new(u.value(), v.value()))),
+        point: Vector3::new(x.value(), y.value(), z.value()),
+        params: each!(k in [0, 1, 2] => match &dc.params[k] {
+            Some([u, v]) => Some(Vector2::new(u.value(), v.value())),
+            None => None,
+        }),
     })
 }
 
@@ -410,8 +413,8 @@ fn batch_shape(p: &[Plane<f64>; 3]) -> usize {
 }
 
 /// Certified three planes for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_three_planes`] gives for each triple (see [`super::batch`]: four
-/// triples of one shape at a time through the four-lane filter). `out` only allocates
+/// answer [`intersect_three_planes`] gives for each triple (see [`super::batch`]: lane
+/// groups of triples of one shape through the lane filter). `out` only allocates
 /// when it grows.
 pub fn intersect_three_planes_batch(
     cases: &[[Plane<f64>; 3]],

@@ -1,15 +1,16 @@
-//! The scalar type of the filter tier: one `f64`, or [`F4`], four independent `f64`
-//! lanes evaluated together (the batch entry points of the linear kernel, which run
-//! four cases of the same shape through one formula).
+//! The scalar type of the filter tier: one `f64`, or [`F4`] (and, on x86-64 with
+//! AVX-512, [`super::lane8::F8`]), independent `f64` lanes evaluated together (the batch
+//! entry points of the linear kernel, which run a group of cases of the same shape
+//! through one formula).
 //!
 //! The double-double arithmetic ([`crate::num::dd`]) and the rounding tests
 //! ([`crate::num::filter`]) are written once over [`Lane`]. Every operation of `F4` is
 //! the `f64` operation applied lane by lane (IEEE 754 binary64, round to nearest, the
-//! same `mul_add`), so each lane computes bit for bit what the scalar code computes for
-//! its case and every error bound proved for one `f64` holds lane-wise. Vectorising is
-//! left to the compiler: the batch kernels are compiled with AVX and FMA enabled
-//! (runtime-detected, as for the scalar FMA path), where the four-lane loops below
-//! become single 256-bit instructions.
+//! same fused `mul_add`), so each lane computes bit for bit what the scalar code
+//! computes for its case and every error bound proved for one `f64` holds lane-wise. On
+//! x86-64 each operation is one AVX intrinsic (the batch kernels are compiled with AVX
+//! and FMA enabled, runtime-detected as for the scalar FMA path); elsewhere the
+//! portable arrays below (checked against the AVX lanes by a test).
 //!
 //! Tests are comparisons in [`Lane::Mask`] form, written as the condition to *accept*
 //! (`a ≤ b`, never `!(a > b)`): a comparison with NaN is false, so NaN anywhere fails
@@ -17,7 +18,7 @@
 
 use std::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
 
-/// A number type of the filter: `f64` or four `f64` lanes.
+/// A number type of the filter: `f64` or a group of `f64` lanes.
 pub trait Lane:
     Copy
     + std::fmt::Debug
