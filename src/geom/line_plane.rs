@@ -269,9 +269,13 @@ fn decide<M: ProductMode, F: Lane>(
     l: &LineData<Dd<M, F>>,
     p: &PlaneData<Dd<M, F>>,
     [mp, ml, mg, gk]: [F; 4],
-) -> Decisions<F> {
+) -> Option<Decisions<F>> {
     let d = dot3(p.n(), &l.d);
     let (den_ok, den) = Denominator::prepare(&d, bound(EPS_DEN, &[gk, ml]));
+    // Exactly degenerate (or out-of-range) input leaves here, before the numerators.
+    if !F::any(den_ok) {
+        return None;
+    }
     let tm = terms_from(l, p, d, p.value_at(&l.o));
     let t = decide_over(&tm.f0.negate(), bound(EPS_PNUM, &[mp, gk]), &den);
     let e_pnum = bound(EPS_PNUM, &[mp, gk, ml]);
@@ -286,7 +290,7 @@ fn decide<M: ProductMode, F: Lane>(
         }
         None => None,
     };
-    Decisions { ok, t, point, uv }
+    Some(Decisions { ok, t, point, uv })
 }
 
 /// The answer from the correctly rounded outputs: the point, or the carrier's point
@@ -319,10 +323,11 @@ fn answer(
 }
 
 /// The filter tier for one case.
+#[allow(clippy::manual_map)] // `match`, not a closure: see below
 #[inline(always)]
 fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
     let (l, p) = (RawLine::new(line), RawPlane::new(plane));
-    let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p));
+    let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p))?;
     if !dc.ok {
         return None;
     }
@@ -364,7 +369,9 @@ fn fast_lanes<M: ProductMode, F: Wide>(
         }
         return (1 << real) - 1;
     };
-    let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p));
+    let Some(dc) = decide(&l.data::<M>(), &p.data(), scales(&l, &p)) else {
+        return 0;
+    };
     let ok = F::bits(dc.ok) & ((1 << real) - 1);
     // (no closures over lanes here: a closure may be compiled out of line, without
     // this function's target features)

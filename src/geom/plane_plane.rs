@@ -415,7 +415,7 @@ impl ParamDecisions<f64> {
 /// parameter directions on `a`: `G_a G_b^kb`. The direction `n` is accepted only when
 /// its largest component is in `[2⁻⁹⁹⁹, 2⁹⁹⁹)` (else the exact tiers scale it).
 #[inline(always)]
-fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Decisions<F> {
+fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Option<Decisions<F>> {
     let (ma, ka, mp) = a.scales(F::splat(SCALE_FLOOR));
     let (mb, kb, mp) = b.scales(mp);
     let (pa, pb) = (a.data::<M>(), b.data::<M>());
@@ -423,6 +423,10 @@ fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Decision
     let n = cross3(pa.n(), pb.n());
     let nn2 = dot3(&n, &n);
     let (mut ok, nn) = Denominator::prepare(&nn2, bound(EPS_NN, &[ka, ka, kb, kb]));
+    // Exactly degenerate (or out-of-range) input leaves here, before the numerators.
+    if !F::any(ok) {
+        return None;
+    }
     let tm = terms_from(&pa, &pb, n, nn2);
     let e_n = bound(EPS_N, &[ka, kb]);
     let dir = each!(i in [0, 1, 2] => decide_value(&tm.n[i], e_n));
@@ -438,13 +442,13 @@ fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Decision
     ok = ok & point[0].ok & point[1].ok & point[2].ok;
     let on_a = param_line(&tm.on_a, &nn, [mp, ma, ka, kb], &mut ok);
     let on_b = param_line(&tm.on_b, &nn, [mp, mb, kb, ka], &mut ok);
-    Decisions {
+    Some(Decisions {
         ok,
         dir,
         point,
         on_a,
         on_b,
-    }
+    })
 }
 
 /// `2⁻⁹⁹⁹` and `2⁹⁹⁹`: the accepted range of the direction's largest component.
@@ -482,7 +486,7 @@ fn param_line<M: ProductMode, F: Lane>(
 /// The filter tier for one case.
 #[inline(always)]
 fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-    let dc = decide::<M, f64>(&RawPlane::new(a), &RawPlane::new(b));
+    let dc = decide::<M, f64>(&RawPlane::new(a), &RawPlane::new(b))?;
     if !dc.ok {
         return None;
     }
@@ -547,7 +551,9 @@ fn fast_lanes<M: ProductMode, F: Wide>(
         }
         return (1 << real) - 1;
     };
-    let dc = decide::<M, F>(&a, &b);
+    let Some(dc) = decide::<M, F>(&a, &b) else {
+        return 0;
+    };
     let ok = F::bits(dc.ok) & ((1 << real) - 1);
     // (no closures over lanes: they may be compiled without the target features)
     let point = [

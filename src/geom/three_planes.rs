@@ -310,7 +310,7 @@ struct Decisions<F: Lane> {
 /// `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`: `S₀S₁S₂`;
 /// point numerators: `P S₀S₁S₂`; parameter numerators of plane `k`: `P S_i S_j m_k`.
 #[inline(always)]
-fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Decisions<F> {
+fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Option<Decisions<F>> {
     let (m0, s0, mp) = raw[0].scales(F::splat(SCALE_MIN));
     let (m1, s1, mp) = raw[1].scales(mp);
     let (m2, s2, mp) = raw[2].scales(mp);
@@ -319,6 +319,10 @@ fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Decisions<F> {
     // The decision: preparing D proves D ≠ 0 (|D̂| > its error bound).
     let (c, d) = det_terms(&data);
     let (mut ok, det) = Denominator::prepare(&d, bound(EPS_DET, &s));
+    // Exactly degenerate (or out-of-range) input leaves here, before the numerators.
+    if !F::any(ok) {
+        return None;
+    }
     let tm = terms_from(&data, &c, d);
     let e_p = bound(EPS_PNUM, &[mp, s0, s1, s2]);
     let point = each!(i in [0, 1, 2] => decide_over(&tm.pnum[i], e_p, &det));
@@ -332,10 +336,11 @@ fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Decisions<F> {
         }
         None => None,
     });
-    Decisions { ok, point, params }
+    Some(Decisions { ok, point, params })
 }
 
 /// The filter tier for one case.
+#[allow(clippy::manual_map)] // `match`, not a closure: see below
 #[inline(always)]
 fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     let raw = [
@@ -343,7 +348,7 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
         RawPlane::new(&p[1]),
         RawPlane::new(&p[2]),
     ];
-    let dc = decide::<M, f64>(&raw);
+    let dc = decide::<M, f64>(&raw)?;
     if !dc.ok {
         return None;
     }
@@ -380,7 +385,9 @@ fn fast_lanes<M: ProductMode, F: Wide>(
         }
         return (1 << real) - 1;
     };
-    let dc = decide::<M, F>(&[r0, r1, r2]);
+    let Some(dc) = decide::<M, F>(&[r0, r1, r2]) else {
+        return 0;
+    };
     let ok = F::bits(dc.ok) & ((1 << real) - 1);
     // (no closures over lanes: they may be compiled without the target features)
     let point = [

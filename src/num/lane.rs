@@ -48,6 +48,8 @@ pub trait Lane:
     fn equal(self, b: Self) -> Self::Mask;
     /// `if m { a } else { b }`, lane-wise.
     fn select(m: Self::Mask, a: Self, b: Self) -> Self;
+    /// True when some lane of `m` is true.
+    fn any(m: Self::Mask) -> bool;
     /// The power of two `2^e` with `2^e ≤ |self| < 2^(e+1)` for a normal double: the
     /// exponent field alone (exact, no rounding).
     fn exponent_power(self) -> Self;
@@ -86,6 +88,10 @@ impl Lane for f64 {
     #[inline(always)]
     fn equal(self, b: Self) -> bool {
         self == b
+    }
+    #[inline(always)]
+    fn any(m: bool) -> bool {
+        m
     }
     #[inline(always)]
     fn select(m: bool, a: Self, b: Self) -> Self {
@@ -244,6 +250,10 @@ impl Lane for F4 {
     #[inline(always)]
     fn equal(self, b: Self) -> M4 {
         M4(imp::eq(self.0, b.0))
+    }
+    #[inline(always)]
+    fn any(m: M4) -> bool {
+        m.bits() != 0
     }
     #[inline(always)]
     fn select(m: M4, a: Self, b: Self) -> Self {

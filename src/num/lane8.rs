@@ -115,6 +115,10 @@ impl Lane for F8 {
         M8(unsafe { _mm512_cmp_pd_mask::<_CMP_EQ_OQ>(self.0, b.0) })
     }
     #[inline(always)]
+    fn any(m: M8) -> bool {
+        m.0 != 0
+    }
+    #[inline(always)]
     fn select(m: M8, a: Self, b: Self) -> Self {
         // blend: lanes of the second operand where the mask is set
         F8(unsafe { _mm512_mask_blend_pd(m.0, b.0, a.0) })
