@@ -111,7 +111,11 @@ pub(crate) fn run<C, T>(
 /// FMA (x86-64 with both; elsewhere the portable `F4`); `None` on an x86-64 CPU without
 /// AVX and FMA (the batch then runs case by case). Runtime detection, no compile flag.
 macro_rules! lane_kernel {
-    ($fast:ident, $case:ty, $answer:ty) => {{
+    ($fast:ident, $case:ty, $answer:ty) => {
+        $crate::geom::batch::lane_kernel!($fast, $case, $answer, 8)
+    };
+    // At most `$max` lanes (the tests use 4 to exercise the AVX kernels on AVX-512 CPUs).
+    ($fast:ident, $case:ty, $answer:ty, $max:expr) => {{
         type Out = [std::mem::MaybeUninit<$answer>];
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx512f,avx,fma")]
@@ -139,7 +143,8 @@ macro_rules! lane_kernel {
         }
         use $crate::geom::batch::LaneKernel;
         #[cfg(target_arch = "x86_64")]
-        let k: Option<LaneKernel<$case, $answer>> = if $crate::num::lane8::available() {
+        let k: Option<LaneKernel<$case, $answer>> = if $max >= 8 && $crate::num::lane8::available()
+        {
             Some(LaneKernel {
                 width: 8,
                 run: wide,

@@ -426,6 +426,40 @@ mod tests {
     use crate::geom::Line;
     use crate::num::error_bound::ErrorBound;
 
+    /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
+    /// `batch::run` equal the scalar ones on every generator.
+    #[test]
+    fn four_lane_kernel_equals_scalar() {
+        use crate::robust::{case, case::same, Case, Construction, Generator};
+        let lanes = lane_kernel!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>, 4);
+        if lanes.is_none() {
+            return; // no AVX/FMA
+        }
+        let objs: Vec<_> = (0..400)
+            .flat_map(|i| Generator::ALL.map(|g| case(Construction::LinePlane, g, i)))
+            .map(|c| {
+                let Case::LinePlane(l, p) = c else {
+                    unreachable!()
+                };
+                (l.object(same).unwrap(), p.object(same).unwrap())
+            })
+            .collect();
+        let cases: Vec<LinePlaneCase> = objs.iter().map(|(l, p)| (l.linear(), p)).collect();
+        let mut out = Vec::new();
+        batch::run(
+            &cases,
+            &mut out,
+            batch_shape,
+            lanes,
+            |&(l, p)| intersect_line_plane(l, p),
+            |&(l, p)| exact_tiers(l, p),
+        );
+        for (c, got) in cases.iter().zip(&out) {
+            assert_eq!(got, &intersect_line_plane(c.0, c.1));
+        }
+        assert_eq!(out.len(), cases.len());
+    }
+
     /// The lane kernel itself decides a lane group of generic cases (lines and one plane) and writes the scalar answers; a lane whose scale is out of range (a
     /// 1e200 origin) is left undecided, without disturbing the others.
     #[test]

@@ -626,6 +626,45 @@ mod tests {
     use super::*;
     use crate::num::error_bound::ErrorBound;
 
+    /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
+    /// `batch::run` equal the scalar ones on every generator.
+    #[test]
+    fn four_lane_kernel_equals_scalar() {
+        use crate::robust::{case, case::same, Case, Construction, Generator};
+        let lanes = lane_kernel!(
+            fast_lanes,
+            PlanePlaneCase,
+            Certified<PlanePlane<Rounded>>,
+            4
+        );
+        if lanes.is_none() {
+            return; // no AVX/FMA
+        }
+        let objs: Vec<_> = (0..400)
+            .flat_map(|i| Generator::ALL.map(|g| case(Construction::PlanePlane, g, i)))
+            .map(|c| {
+                let Case::PlanePlane(a, b) = c else {
+                    unreachable!()
+                };
+                (a.object(same).unwrap(), b.object(same).unwrap())
+            })
+            .collect();
+        let cases: Vec<PlanePlaneCase> = objs.iter().map(|(a, b)| (a, b)).collect();
+        let mut out = Vec::new();
+        batch::run(
+            &cases,
+            &mut out,
+            batch_shape,
+            lanes,
+            |&(a, b)| intersect_planes(a, b),
+            |&(a, b)| exact_tiers(a, b),
+        );
+        for (c, got) in cases.iter().zip(&out) {
+            assert_eq!(got, &intersect_planes(c.0, c.1));
+        }
+        assert_eq!(out.len(), cases.len());
+    }
+
     /// The lane kernel decides a lane group of generic pairs of one shape and writes the scalar
     /// answers; a lane of two parallel planes is left to the scalar path.
     #[test]

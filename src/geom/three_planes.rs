@@ -451,6 +451,44 @@ mod tests {
         }
     }
 
+    /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
+    /// `batch::run` equal the scalar ones on every generator.
+    #[test]
+    fn four_lane_kernel_equals_scalar() {
+        use crate::robust::{case, case::same, Case, Construction, Generator};
+        let lanes = lane_kernel!(
+            fast_lanes,
+            [Plane<f64>; 3],
+            Certified<ThreePlanes<Rounded>>,
+            4
+        );
+        if lanes.is_none() {
+            return; // no AVX/FMA
+        }
+        let cases: Vec<[Plane<f64>; 3]> = (0..400)
+            .flat_map(|i| Generator::ALL.map(|g| case(Construction::ThreePlanes, g, i)))
+            .map(|c| {
+                let Case::ThreePlanes(p) = c else {
+                    unreachable!()
+                };
+                p.map(|q| q.object(same).unwrap())
+            })
+            .collect();
+        let mut out = Vec::new();
+        batch::run(
+            &cases,
+            &mut out,
+            batch_shape,
+            lanes,
+            intersect_three_planes,
+            exact_tiers,
+        );
+        for (c, got) in cases.iter().zip(&out) {
+            assert_eq!(got, &intersect_three_planes(c));
+        }
+        assert_eq!(out.len(), cases.len());
+    }
+
     /// The lane kernel decides a lane group of generic triples of one shape and writes the scalar
     /// answers; an exactly degenerate lane (three times the same plane) is left to the
     /// scalar path.
