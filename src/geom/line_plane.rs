@@ -402,7 +402,7 @@ fn batch_shape((l, p): &LinePlaneCase) -> usize {
 }
 
 /// Certified line ∩ plane for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_line_plane`] gives for each case (see [`super::batch`]: lane groups
+/// answer [`intersect_line_plane`] gives for each case (see `geom::batch`: lane groups
 /// of one shape through the lane filter). `out` only allocates when it
 /// grows.
 pub fn intersect_line_plane_batch(

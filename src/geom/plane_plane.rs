@@ -584,7 +584,7 @@ fn batch_shape((a, b): &PlanePlaneCase) -> usize {
 }
 
 /// Certified plane ∩ plane for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_planes`] gives for each pair (see [`super::batch`]: lane groups of
+/// answer [`intersect_planes`] gives for each pair (see `geom::batch`: lane groups of
 /// pairs of one shape through the lane filter). `out` only allocates when it
 /// grows.
 pub fn intersect_planes_batch(

@@ -420,7 +420,7 @@ fn batch_shape(p: &[Plane<f64>; 3]) -> usize {
 }
 
 /// Certified three planes for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_three_planes`] gives for each triple (see [`super::batch`]: lane
+/// answer [`intersect_three_planes`] gives for each triple (see `geom::batch`: lane
 /// groups of triples of one shape through the lane filter). `out` only allocates
 /// when it grows.
 pub fn intersect_three_planes_batch(

@@ -199,7 +199,7 @@ pub fn epick_safe(case: &Case) -> bool {
     hi <= 2f64.powi(b) && (lo == f64::INFINITY || lo >= 2f64.powi(-b))
 }
 
-/// CGAL Epick's answer (an input it refuses is [`Kind::Error`]); `None` when the case
+/// CGAL Epick's answer (an input it refuses is [`Kind::Error`](crate::robust::answer::Kind::Error)); `None` when the case
 /// is outside [`epick_safe`]'s window.
 #[cfg(feature = "cgal")]
 pub fn epick(case: &Case) -> Option<Answer<f64>> {

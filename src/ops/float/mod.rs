@@ -1,5 +1,5 @@
 //! The common float machinery of every iterative operation (OPERATIONS.md §0.4, §12):
-//! the tolerances ([`Precision`]), the Newton driver ([`newton`]) and duplicate
+//! the tolerances ([`Precision`]), the Newton driver ([`mod@newton`]) and duplicate
 //! merging ([`merge_duplicates`]). This is the fast path only: nothing here proves
 //! anything; the certificates come from [`crate::certify`]-style interval methods.
 
