@@ -166,3 +166,48 @@ macro_rules! lane_kernel {
     }};
 }
 pub(crate) use lane_kernel;
+
+/// Test drivers shared by the operations' lane-kernel tests.
+#[cfg(test)]
+pub(crate) mod testing {
+    use super::*;
+
+    /// One call of `kernel` on `cases[..kernel.width]`, every slot first filled with
+    /// `placeholder` (so that reading them back is sound whatever the kernel wrote):
+    /// the decided lanes as bits, and the slots.
+    pub(crate) fn run_once<C, T: Clone>(
+        kernel: &LaneKernel<C, T>,
+        cases: &[C],
+        placeholder: T,
+    ) -> (u32, Vec<T>) {
+        let w = kernel.width;
+        let mut out: Vec<MaybeUninit<T>> = (0..w)
+            .map(|_| MaybeUninit::new(placeholder.clone()))
+            .collect();
+        let idx: Vec<usize> = (0..w).collect();
+        let bits = (kernel.run)(cases, &idx, w, &mut out);
+        // SAFETY: every slot was initialised above (a slot the kernel wrote again only
+        // leaks its placeholder).
+        let out = out
+            .into_iter()
+            .map(|x| unsafe { x.assume_init() })
+            .collect();
+        (bits, out)
+    }
+
+    /// [`run`] with `lanes` answers every case as `scalar` does, in order.
+    pub(crate) fn assert_run_equals_scalar<C: std::fmt::Debug, T: PartialEq + std::fmt::Debug>(
+        cases: &[C],
+        shape: impl Fn(&C) -> usize,
+        lanes: Option<LaneKernel<C, T>>,
+        scalar: impl Fn(&C) -> T,
+        undecided: impl Fn(&C) -> T,
+    ) {
+        let mut out = Vec::new();
+        run(cases, &mut out, shape, lanes, &scalar, undecided);
+        assert_eq!(out.len(), cases.len());
+        for (c, got) in cases.iter().zip(&out) {
+            assert_eq!(got, &scalar(c), "{c:?}");
+        }
+    }
+}

@@ -109,15 +109,20 @@ impl<'a, T: Coord> Linear<'a, T> {
                 d: lift3(l.dir()),
                 range: l.range().map(|[a, b]| [a.lift(), b.lift()]),
             },
-            Linear::Segment(s) => {
-                let a = lift3(s.a());
-                let d = sub3(&lift3(s.b()), &a);
-                LineData {
-                    o: a,
-                    d,
-                    range: Some(unit_range()),
-                }
-            }
+            Linear::Segment(s) => LineData::segment(lift3(s.a()), lift3(s.b())),
+        }
+    }
+}
+
+impl<R: Ring> LineData<R> {
+    /// The segment `a + t(b − a)`, `t ∈ [0, 1]`.
+    #[inline(always)]
+    pub(crate) fn segment(a: V3<R>, b: V3<R>) -> Self {
+        let d = sub3(&b, &a);
+        LineData {
+            o: a,
+            d,
+            range: Some(unit_range()),
         }
     }
 }
@@ -179,20 +184,19 @@ impl<R: Ring> PlaneData<R> {
     pub(crate) fn new<T: Coord + Lift<R>>(p: &Plane<T>) -> Self {
         match p {
             Plane::Parametric { origin, u, v } => {
-                let (u, v) = (lift3(u), lift3(v));
-                let n = cross3(&u, &v);
-                PlaneData::Param {
-                    o: lift3(origin),
-                    u,
-                    v,
-                    n,
-                }
+                PlaneData::parametric(lift3(origin), lift3(u), lift3(v))
             }
             Plane::Implicit { normal, d } => PlaneData::Implicit {
                 n: lift3(normal),
                 d: d.lift(),
             },
         }
+    }
+    /// The parametric plane `o + s·u + t·v` with its normal `N = u × v`.
+    #[inline(always)]
+    pub(crate) fn parametric(o: V3<R>, u: V3<R>, v: V3<R>) -> Self {
+        let n = cross3(&u, &v);
+        PlaneData::Param { o, u, v, n }
     }
     /// The (unnormalised) normal `N`.
     #[inline(always)]

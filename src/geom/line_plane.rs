@@ -445,63 +445,59 @@ mod tests {
             })
             .collect();
         let cases: Vec<LinePlaneCase> = objs.iter().map(|(l, p)| (l.linear(), p)).collect();
-        let mut out = Vec::new();
-        batch::run(
+        batch::testing::assert_run_equals_scalar(
             &cases,
-            &mut out,
             batch_shape,
             lanes,
             |&(l, p)| intersect_line_plane(l, p),
             |&(l, p)| exact_tiers(l, p),
         );
-        for (c, got) in cases.iter().zip(&out) {
-            assert_eq!(got, &intersect_line_plane(c.0, c.1));
-        }
-        assert_eq!(out.len(), cases.len());
     }
 
-    /// The lane kernel itself decides a lane group of generic cases (lines and one plane) and writes the scalar answers; a lane whose scale is out of range (a
-    /// 1e200 origin) is left undecided, without disturbing the others.
+    /// The lane kernels themselves decide a lane group of generic cases (lines and one
+    /// plane) and write the scalar answers; a lane whose scale is out of range (a 1e200
+    /// origin) is left undecided, without disturbing the others.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        let Some(kernel) = lane_kernel!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>)
-        else {
-            return; // no AVX/FMA: the batch runs case by case
-        };
-        let plane = Plane::parametric(
-            [0.3, -1.7, 2.9].into(),
-            [1.1, 0.2, -0.7].into(),
-            [-0.4, 1.3, 0.6].into(),
-        )
-        .unwrap();
-        let w = kernel.width;
-        let lines: Vec<Line<f64>> = (0..w)
-            .map(|i| {
-                let o = if i % 4 == 2 {
-                    1e200
+        // Every lane width the CPU has: the four-lane (AVX) kernel also on AVX-512 machines.
+        for max in [4, 8] {
+            let Some(kernel) = lane_kernel!(
+                fast_lanes,
+                LinePlaneCase,
+                Certified<LinePlane<Rounded>>,
+                max
+            ) else {
+                continue; // no AVX/FMA
+            };
+            let plane = Plane::parametric(
+                [0.3, -1.7, 2.9].into(),
+                [1.1, 0.2, -0.7].into(),
+                [-0.4, 1.3, 0.6].into(),
+            )
+            .unwrap();
+            let w = kernel.width;
+            let lines: Vec<Line<f64>> = (0..w)
+                .map(|i| {
+                    let o = if i % 4 == 2 {
+                        1e200
+                    } else {
+                        0.1 * i as f64 + 0.37
+                    };
+                    Line::new([o, -2.3, 0.71].into(), [0.9, 0.33 + i as f64, -1.21].into()).unwrap()
+                })
+                .collect();
+            let cases: Vec<LinePlaneCase> =
+                lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
+            let (bits, out) =
+                batch::testing::run_once(&kernel, &cases, filter_certified(LinePlane::Parallel));
+            for i in 0..w {
+                if i % 4 == 2 {
+                    assert_eq!(bits >> i & 1, 0, "lane {i}");
+                    assert_eq!(out[i], filter_certified(LinePlane::Parallel));
                 } else {
-                    0.1 * i as f64 + 0.37
-                };
-                Line::new([o, -2.3, 0.71].into(), [0.9, 0.33 + i as f64, -1.21].into()).unwrap()
-            })
-            .collect();
-        let cases: Vec<LinePlaneCase> = lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
-        // Every slot starts initialised (a placeholder the kernel may overwrite), so that
-        // reading any of them back is sound.
-        let mut out: Vec<MaybeUninit<_>> = (0..w)
-            .map(|_| MaybeUninit::new(filter_certified(LinePlane::Parallel)))
-            .collect();
-        let idx: Vec<usize> = (0..w).collect();
-        let bits = (kernel.run)(&cases, &idx, w, &mut out);
-        // SAFETY: every slot was initialised above.
-        let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
-        for i in 0..w {
-            if i % 4 == 2 {
-                assert_eq!(bits >> i & 1, 0, "lane {i}");
-                assert_eq!(*out[i], filter_certified(LinePlane::Parallel));
-            } else {
-                assert_eq!(bits >> i & 1, 1, "lane {i}");
-                assert_eq!(*out[i], intersect_line_plane(cases[i].0, cases[i].1));
+                    assert_eq!(bits >> i & 1, 1, "lane {i}");
+                    assert_eq!(out[i], intersect_line_plane(cases[i].0, cases[i].1));
+                }
             }
         }
     }

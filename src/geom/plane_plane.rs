@@ -650,55 +650,49 @@ mod tests {
             })
             .collect();
         let cases: Vec<PlanePlaneCase> = objs.iter().map(|(a, b)| (a, b)).collect();
-        let mut out = Vec::new();
-        batch::run(
+        batch::testing::assert_run_equals_scalar(
             &cases,
-            &mut out,
             batch_shape,
             lanes,
             |&(a, b)| intersect_planes(a, b),
             |&(a, b)| exact_tiers(a, b),
         );
-        for (c, got) in cases.iter().zip(&out) {
-            assert_eq!(got, &intersect_planes(c.0, c.1));
-        }
-        assert_eq!(out.len(), cases.len());
     }
 
     /// The lane kernel decides a lane group of generic pairs of one shape and writes the scalar
     /// answers; a lane of two parallel planes is left to the scalar path.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        let Some(kernel) = lane_kernel!(fast_lanes, PlanePlaneCase, Certified<PlanePlane<Rounded>>)
-        else {
-            return; // no AVX/FMA
-        };
-        let w = kernel.width;
-        let planes: Vec<Plane<f64>> = (0..2 * w)
-            .map(|i| {
-                let s = 0.41 + 1.37 * i as f64;
-                // the pair of lane 1 (mod 4) is parallel: planes 2 and 3 (mod 8) share a normal
-                let n = if i % 8 == 3 { s - 1.37 } else { s };
-                Plane::implicit(Vector3::new(1.7 / n, n, 0.3 - n * 1.37), s).unwrap()
-            })
-            .collect();
-        let cases: Vec<PlanePlaneCase> = (0..w)
-            .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
-            .collect();
-        // Every slot starts initialised (a placeholder the kernel may overwrite), so that
-        // reading any of them back is sound.
-        let mut out: Vec<MaybeUninit<_>> = (0..w)
-            .map(|_| MaybeUninit::new(filter_certified(PlanePlane::Parallel)))
-            .collect();
-        let idx: Vec<usize> = (0..w).collect();
-        let bits = (kernel.run)(&cases, &idx, w, &mut out);
-        // SAFETY: every slot was initialised above.
-        let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
-        for i in 0..w {
-            assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
-            if i % 4 != 1 {
-                assert_eq!(*out[i], intersect_planes(cases[i].0, cases[i].1));
-                assert!(matches!(out[i].value, PlanePlane::Line(_)));
+        // Every lane width the CPU has: the four-lane (AVX) kernel also on AVX-512 machines.
+        for max in [4, 8] {
+            let Some(kernel) = lane_kernel!(
+                fast_lanes,
+                PlanePlaneCase,
+                Certified<PlanePlane<Rounded>>,
+                max
+            ) else {
+                continue; // no AVX/FMA
+            };
+            let w = kernel.width;
+            let planes: Vec<Plane<f64>> = (0..2 * w)
+                .map(|i| {
+                    let s = 0.41 + 1.37 * i as f64;
+                    // the pair of lane 1 (mod 4) is parallel: planes 2 and 3 (mod 8) share a normal
+                    let n = if i % 8 == 3 { s - 1.37 } else { s };
+                    Plane::implicit(Vector3::new(1.7 / n, n, 0.3 - n * 1.37), s).unwrap()
+                })
+                .collect();
+            let cases: Vec<PlanePlaneCase> = (0..w)
+                .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
+                .collect();
+            let (bits, out) =
+                batch::testing::run_once(&kernel, &cases, filter_certified(PlanePlane::Parallel));
+            for i in 0..w {
+                assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
+                if i % 4 != 1 {
+                    assert_eq!(out[i], intersect_planes(cases[i].0, cases[i].1));
+                    assert!(matches!(out[i].value, PlanePlane::Line(_)));
+                }
             }
         }
     }

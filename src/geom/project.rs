@@ -23,10 +23,11 @@ use rug::{Float, Rational};
 use super::data::{Lift, LineData, Linear, PlaneData};
 use super::exact_tier::{filter_certified, Rounder};
 use super::objects::Plane;
+use super::raw::{RawLine, RawPlane};
 use crate::certificate::Certified;
 use crate::num::dd::{Dd, ProductMode, U};
 use crate::num::filter::{
-    bound, dispatch_fma, extend_scale, group_scale, round_over, sign_of, Denominator, SCALE_MIN,
+    accepted, bound, dispatch_fma, round_over, scale_of, sign_of, Denominator,
 };
 use crate::num::ring::{cross3, dot3, each, sub3, Field, Ring, V2, V3};
 use crate::num::round::{sqrt_rational, Rounded};
@@ -402,17 +403,8 @@ fn fast_line<M: ProductMode>(
     p: &Vector3<f64>,
     line: Linear<f64>,
 ) -> Option<LineProjection<Rounded, Rounded>> {
-    let (mp, ml) = match line {
-        Linear::Line(l) => (
-            group_scale(l.origin().as_slice())?,
-            group_scale(l.dir().as_slice())?,
-        ),
-        Linear::Segment(s) => {
-            let m = group_scale(s.a().as_slice())?.max(group_scale(s.b().as_slice())?);
-            (m, m)
-        }
-    };
-    let mp = mp.max(group_scale(p.as_slice())?);
+    let (mp, ml) = RawLine::new(line).scales();
+    let (mp, ml) = (accepted(mp.max(scale_of(p.as_slice())))?, accepted(ml)?);
     let ml = if line_is_segment(&line) {
         ml.max(mp)
     } else {
@@ -467,17 +459,8 @@ fn fast_plane<M: ProductMode>(
     p: &Vector3<f64>,
     plane: &Plane<f64>,
 ) -> Option<PlaneProjection<Rounded, Rounded>> {
-    let mp = group_scale(p.as_slice())?;
-    let (mg, s, mp) = match plane {
-        Plane::Parametric { origin, u, v } => {
-            let m = group_scale(u.as_slice())?.max(group_scale(v.as_slice())?);
-            (m, m * m, mp.max(group_scale(origin.as_slice())?))
-        }
-        Plane::Implicit { normal, d } => {
-            let m = group_scale(normal.as_slice())?;
-            (m, m, extend_scale(Some(mp.max(SCALE_MIN)), *d, m)?)
-        }
-    };
+    let (mg, s, mp) = RawPlane::new(plane).scales(scale_of(p.as_slice()));
+    let (mg, s, mp) = (accepted(mg)?, accepted(s)?, accepted(mp)?);
     let q: PlaneData<Dd<M>> = PlaneData::new(plane);
     let pd: V3<Dd<M>> = [p[0].lift(), p[1].lift(), p[2].lift()];
     let tm = plane_terms(&pd, &q);

@@ -6,12 +6,12 @@
 
 use nalgebra::Vector3;
 
-use super::data::{unit_range, LineData, Linear, PlaneData};
+use super::data::{LineData, Linear, PlaneData};
 use super::objects::Plane;
 use crate::num::dd::{Dd, ProductMode};
 use crate::num::filter::{extend_scale_of, scale_of};
 use crate::num::lane::{Lane, Wide};
-use crate::num::ring::{cross3, each, sub3, V3};
+use crate::num::ring::{each, V3};
 
 /// A line (origin, direction) or a segment (end points), coordinates as they are given.
 #[derive(Debug, Clone, Copy)]
@@ -113,15 +113,7 @@ impl<F: Lane> RawLine<F> {
                 d: lift3(d),
                 range: None,
             },
-            RawLine::Segment { a, b } => {
-                let o = lift3(a);
-                let d = sub3(&lift3(b), &o);
-                LineData {
-                    o,
-                    d,
-                    range: Some(unit_range()),
-                }
-            }
+            RawLine::Segment { a, b } => LineData::segment(lift3(a), lift3(b)),
         }
     }
 }
@@ -197,16 +189,7 @@ impl<F: Lane> RawPlane<F> {
     #[inline(always)]
     pub(crate) fn data<M: ProductMode>(&self) -> PlaneData<Dd<M, F>> {
         match self {
-            RawPlane::Param { o, u, v } => {
-                let (u, v) = (lift3(u), lift3(v));
-                let n = cross3(&u, &v);
-                PlaneData::Param {
-                    o: lift3(o),
-                    u,
-                    v,
-                    n,
-                }
-            }
+            RawPlane::Param { o, u, v } => PlaneData::parametric(lift3(o), lift3(u), lift3(v)),
             RawPlane::Implicit { n, d } => PlaneData::Implicit {
                 n: lift3(n),
                 d: Dd::exact(*d),

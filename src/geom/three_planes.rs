@@ -474,19 +474,13 @@ mod tests {
                 p.map(|q| q.object(same).unwrap())
             })
             .collect();
-        let mut out = Vec::new();
-        batch::run(
+        batch::testing::assert_run_equals_scalar(
             &cases,
-            &mut out,
             batch_shape,
             lanes,
             intersect_three_planes,
             exact_tiers,
         );
-        for (c, got) in cases.iter().zip(&out) {
-            assert_eq!(got, &intersect_three_planes(c));
-        }
-        assert_eq!(out.len(), cases.len());
     }
 
     /// The lane kernel decides a lane group of generic triples of one shape and writes the scalar
@@ -494,36 +488,35 @@ mod tests {
     /// scalar path.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        let Some(kernel) =
-            lane_kernel!(fast_lanes, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>)
-        else {
-            return; // no AVX/FMA
-        };
-        let w = kernel.width;
-        let cases: Vec<[Plane<f64>; 3]> = (0..w)
-            .map(|i| {
-                let s = 0.37 + i as f64;
-                if i % 4 == 1 {
-                    [plane(2.0, false), plane(3.0, true), plane(2.0, false)]
-                } else {
-                    [plane(s, false), plane(s * 1.9, true), plane(-s, false)]
+        // Every lane width the CPU has: the four-lane (AVX) kernel also on AVX-512 machines.
+        for max in [4, 8] {
+            let Some(kernel) = lane_kernel!(
+                fast_lanes,
+                [Plane<f64>; 3],
+                Certified<ThreePlanes<Rounded>>,
+                max
+            ) else {
+                continue; // no AVX/FMA
+            };
+            let w = kernel.width;
+            let cases: Vec<[Plane<f64>; 3]> = (0..w)
+                .map(|i| {
+                    let s = 0.37 + i as f64;
+                    if i % 4 == 1 {
+                        [plane(2.0, false), plane(3.0, true), plane(2.0, false)]
+                    } else {
+                        [plane(s, false), plane(s * 1.9, true), plane(-s, false)]
+                    }
+                })
+                .collect();
+            let (bits, out) =
+                batch::testing::run_once(&kernel, &cases, filter_certified(ThreePlanes::Empty));
+            for i in 0..w {
+                assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
+                if i % 4 != 1 {
+                    assert_eq!(out[i], intersect_three_planes(&cases[i]));
+                    assert!(matches!(out[i].value, ThreePlanes::Point { .. }));
                 }
-            })
-            .collect();
-        // Every slot starts initialised (a placeholder the kernel may overwrite), so that
-        // reading any of them back is sound.
-        let mut out: Vec<MaybeUninit<_>> = (0..w)
-            .map(|_| MaybeUninit::new(filter_certified(ThreePlanes::Empty)))
-            .collect();
-        let idx: Vec<usize> = (0..w).collect();
-        let bits = (kernel.run)(&cases, &idx, w, &mut out);
-        // SAFETY: every slot was initialised above.
-        let out: Vec<&Certified<_>> = out.iter().map(|x| unsafe { x.assume_init_ref() }).collect();
-        for i in 0..w {
-            assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
-            if i % 4 != 1 {
-                assert_eq!(*out[i], intersect_three_planes(&cases[i]));
-                assert!(matches!(out[i].value, ThreePlanes::Point { .. }));
             }
         }
     }

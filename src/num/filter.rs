@@ -25,7 +25,7 @@ use std::cmp::Ordering;
 
 use super::dd::{fast_two_sum, two_sum, Dd, ProductMode, ETA, U};
 use super::lane::{Lane, Wide, MAX_LANES};
-use super::round::{next_up, Rounded};
+use super::round::Rounded;
 
 /// Largest group maximum the filter accepts: 2¹⁰⁰.
 pub const SCALE_MAX: f64 = 1.2676506002282294e30;
@@ -33,32 +33,17 @@ pub const SCALE_MAX: f64 = 1.2676506002282294e30;
 pub const SCALE_MIN: f64 = 7.888609052210118e-31;
 
 /// The scale of an input group: `max |x|`, clamped up to [`SCALE_MIN`]; `None` when it
-/// exceeds [`SCALE_MAX`] or is not finite.
+/// exceeds [`SCALE_MAX`] or is not finite ([`scale_of`] for one `f64`, its poison as
+/// `None`).
 #[inline(always)]
 pub fn group_scale(values: &[f64]) -> Option<f64> {
-    let mut m = SCALE_MIN;
-    for &x in values {
-        let a = x.abs();
-        if !(a <= SCALE_MAX) {
-            return None;
-        }
-        if a > m {
-            m = a;
-        }
-    }
-    Some(m)
+    accepted(scale_of(values))
 }
 
-/// `max(a, b)` of two group scales rounded up where a quotient enters: a number that
-/// belongs to group `g·h` (an implicit plane's `d`, in the units of normal × position)
-/// extends the position scale by `|d| / m_normal`, rounded up.
+/// A scale from [`scale_of`] or [`extend_scale_of`], `None` when it is the poison `+∞`.
 #[inline(always)]
-pub fn extend_scale(scale: Option<f64>, numerator: f64, divisor: f64) -> Option<f64> {
-    let q = next_up(numerator.abs() / divisor);
-    match scale {
-        Some(m) if q <= SCALE_MAX => Some(m.max(q)),
-        _ => None,
-    }
+pub fn accepted(scale: f64) -> Option<f64> {
+    (scale < f64::INFINITY).then_some(scale)
 }
 
 /// [`group_scale`] for any [`Lane`] type: `max |x|` clamped up to [`SCALE_MIN`], and
@@ -79,7 +64,8 @@ pub fn scale_of<F: Lane>(values: &[F]) -> F {
     F::select(ok, m, F::splat(f64::INFINITY))
 }
 
-/// [`extend_scale`] for any [`Lane`] type: `max(m, q)` with `q ≥ |d|/divisor`, `+∞`
+/// The position scale `m` extended by a number of group `g·h` (an implicit plane's `d`,
+/// in the units of normal × position): `max(m, q)` with `q ≥ |d|/divisor`, `+∞`
 /// beyond [`SCALE_MAX`] (as in [`scale_of`]). `q = fl(fl(|d|/divisor)·(1 + 4u))`: where
 /// it matters (`q ≥ m ≥ 2⁻¹⁰⁰`, no underflow) `q ≥ (|d|/divisor)(1 − u)²(1 + 4u) ≥
 /// |d|/divisor`; a NaN quotient (∞/∞: a poisoned divisor) fails the range test.
