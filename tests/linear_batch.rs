@@ -1,5 +1,5 @@
-//! The batch entry points (`*_batch`: four cases of one shape at a time through the
-//! four-lane filter) answer every case exactly as the scalar entry point does — verdict,
+//! The batch entry points (`*_batch`: lane groups of cases through the lane filter)
+//! answer every case exactly as the scalar entry point does — verdict,
 //! correctly rounded values, enclosures, arithmetic tier — on every generator of
 //! `geocert::robust` interleaved (so that lanes mix shapes, and decided lanes sit next
 //! to lanes that fall through to the exact tiers), in input order, appended after what
@@ -107,6 +107,63 @@ fn plane_plane_batch_equals_scalar() {
         filter += usize::from(want.arithmetic == Arithmetic::Filter);
     }
     assert!(filter >= 1500, "{filter}");
+}
+
+/// `batch` over `cases` in chunks of 13 equals `scalar` case by case: in a chunk the
+/// shapes (kinds of planes, lines or segments) rarely fill a lane group alone, so most
+/// lane groups pool what is left of several shapes.
+fn chunks_equal_scalar<C: std::fmt::Debug, T: PartialEq + std::fmt::Debug>(
+    cases: &[C],
+    batch: impl Fn(&[C], &mut Vec<T>),
+    scalar: impl Fn(&C) -> T,
+) {
+    let mut out = Vec::new();
+    for chunk in cases.chunks(13) {
+        out.clear();
+        batch(chunk, &mut out);
+        assert_eq!(out.len(), chunk.len());
+        for (c, got) in chunk.iter().zip(&out) {
+            assert_eq!(got, &scalar(c), "{c:?}");
+        }
+    }
+}
+
+#[test]
+fn small_batches_pool_shapes() {
+    let triples: Vec<[Plane<f64>; 3]> = cases(Construction::ThreePlanes, 300)
+        .iter()
+        .map(|c| match c {
+            Case::ThreePlanes(p) => p.map(|q| q.object(same).expect("valid")),
+            _ => unreachable!(),
+        })
+        .collect();
+    chunks_equal_scalar(
+        &triples,
+        intersect_three_planes_batch,
+        intersect_three_planes,
+    );
+    let pairs: Vec<(Plane<f64>, Plane<f64>)> = cases(Construction::PlanePlane, 300)
+        .iter()
+        .map(|c| match c {
+            Case::PlanePlane(a, b) => (a.object(same).unwrap(), b.object(same).unwrap()),
+            _ => unreachable!(),
+        })
+        .collect();
+    let pp: Vec<PlanePlaneCase> = pairs.iter().map(|(a, b)| (a, b)).collect();
+    chunks_equal_scalar(&pp, intersect_planes_batch, |&(a, b)| {
+        intersect_planes(a, b)
+    });
+    let objs: Vec<(LinearObj<f64>, Plane<f64>)> = cases(Construction::LinePlane, 300)
+        .iter()
+        .map(|c| match c {
+            Case::LinePlane(l, p) => (l.object(same).unwrap(), p.object(same).unwrap()),
+            _ => unreachable!(),
+        })
+        .collect();
+    let lp: Vec<LinePlaneCase> = objs.iter().map(|(l, p)| (l.linear(), p)).collect();
+    chunks_equal_scalar(&lp, intersect_line_plane_batch, |&(l, p)| {
+        intersect_line_plane(l, p)
+    });
 }
 
 /// Batches of every length up to 20 of one shape (full lane groups of 4 or 8, and

@@ -2,16 +2,19 @@
 //! (AVX-512, [`crate::num::lane8::F8`]) or four (AVX, [`crate::num::lane::F4`]) at a
 //! time through the filter.
 //!
-//! The cases are queued by *shape* (line or segment, parametric or implicit plane: the
-//! formulas differ by shape, the lanes must not); each time a lane group of one shape
-//! is full it goes through the lane filter, which is the scalar filter's formula
-//! instantiated for the lane type — every lane computes, bit for bit, what the scalar
-//! filter computes for its case, so a lane decides exactly when the scalar filter
-//! would. Lanes the filter cannot decide go to the exact tiers; what is left over at the
-//! end goes through a padded lane group (three cases or more) or case by case; on a CPU
-//! without AVX and FMA every case takes the scalar path. Each answer is therefore the
-//! answer of the scalar entry point for that case (tested in `tests/linear_batch.rs`),
-//! in the order of the input.
+//! The cases are queued by *shape* (line or segment, parametric or implicit plane);
+//! each time a lane group of one shape is full it goes through the lane filter, which
+//! is the scalar filter's formula instantiated for the lane type — every lane computes,
+//! bit for bit, what the scalar filter computes for its case, so a lane decides exactly
+//! when the scalar filter would. What is left over of the shapes at the end is pooled
+//! by *family* (the shapes one lane group may mix: planes of both kinds, written as
+//! [`super::data::PlaneData::General`], whose lanes compute the values of their own
+//! shape — equal as numbers, only the sign of a zero may differ — tested part by part
+//! in each operation) into full lane groups, then one padded lane group (three cases or
+//! more) or case by case. Lanes the filter cannot decide go to the exact tiers; on a
+//! CPU without AVX and FMA every case takes the scalar path. Each answer is therefore
+//! the answer of the scalar entry point for that case (tested in
+//! `tests/linear_batch.rs`), in the order of the input.
 
 use std::mem::MaybeUninit;
 
@@ -20,7 +23,7 @@ use crate::num::lane::MAX_LANES;
 /// Number of shape queues (three planes: 2³ shapes).
 const SHAPES: usize = 8;
 
-/// The fewest cases left over in a shape queue that still go through a (padded) lane
+/// The fewest cases left over in a family's pool that still go through a (padded) lane
 /// group: measured, a lane group of 4 or 8 costs about what three scalar calls cost.
 const PAD_FROM: usize = 3;
 
@@ -37,14 +40,17 @@ pub(crate) struct LaneKernel<C, T> {
 pub(crate) type LaneFn<C, T> = fn(&[C], &[usize], usize, &mut [MaybeUninit<T>]) -> u32;
 
 /// Append the answers for `cases` to `out`, in order. `shape(c) < 8` groups cases that
-/// one lane kernel can take together; `lanes` (when the CPU can run it) decides a lane
-/// group of one shape; `scalar` answers one case (the full certified path), and
-/// `undecided` answers a case the lane filter did not decide: the exact tiers, since
-/// the scalar filter computes the same bits and would not decide it either.
+/// one lane kernel can take together; `family(shape)` groups shapes the kernel can also
+/// mix in one lane group (what is left over of each shape is pooled by family); `lanes`
+/// (when the CPU can run it) decides a lane group; `scalar` answers one case (the full
+/// certified path), and `undecided` answers a case the lane filter did not decide: the
+/// exact tiers, since the scalar filter computes the same values and would not decide
+/// it either.
 pub(crate) fn run<C, T>(
     cases: &[C],
     out: &mut Vec<T>,
     shape: impl Fn(&C) -> usize,
+    family: impl Fn(usize) -> usize,
     lanes: Option<LaneKernel<C, T>>,
     scalar: impl Fn(&C) -> T,
     undecided: impl Fn(&C) -> T,
@@ -59,38 +65,55 @@ pub(crate) fn run<C, T>(
             }
         }
         Some(lanes) => {
+            let width = lanes.width.min(MAX_LANES);
+            // One lane group: the answers of its undecided real lanes from `undecided`.
+            let group = |idx: &[usize], real: usize, slots: &mut [MaybeUninit<T>]| {
+                let decided = (lanes.run)(cases, idx, real, slots);
+                for (k, &j) in idx[..real].iter().enumerate() {
+                    if decided >> k & 1 == 0 {
+                        slots[j].write(undecided(&cases[j]));
+                    }
+                }
+            };
             let mut queue = [[0usize; MAX_LANES]; SHAPES];
             let mut fill = [0usize; SHAPES];
-            let width = lanes.width.min(MAX_LANES);
             for (i, c) in cases.iter().enumerate() {
                 let s = shape(c);
                 queue[s][fill[s]] = i;
                 fill[s] += 1;
                 if fill[s] == width {
                     fill[s] = 0;
-                    let decided = (lanes.run)(cases, &queue[s][..width], width, slots);
-                    for (k, &j) in queue[s][..width].iter().enumerate() {
-                        if decided >> k & 1 == 0 {
-                            slots[j].write(undecided(&cases[j]));
-                        }
-                    }
+                    group(&queue[s][..width], width, slots);
                 }
             }
-            // What is left of each shape: a lane group padded with copies of its first
-            // case when that is cheaper than the scalar path (three cases or more), else
-            // case by case.
-            for (q, &n) in queue.iter().zip(&fill) {
-                if n >= PAD_FROM {
-                    let mut idx = *q;
-                    idx[n..width].fill(q[0]);
-                    let decided = (lanes.run)(cases, &idx[..width], n, slots);
-                    for (k, &j) in q[..n].iter().enumerate() {
-                        if decided >> k & 1 == 0 {
-                            slots[j].write(undecided(&cases[j]));
-                        }
+            // What is left of the shapes of each family, pooled: full lane groups, then
+            // the rest in a lane group padded with copies of its first case when that
+            // is cheaper than the scalar path (three cases or more), else case by case.
+            // (every shape in one family below SHAPES: each leftover is answered once)
+            assert!(
+                (0..SHAPES).all(|s| family(s) < SHAPES),
+                "a family out of range"
+            );
+            for f in 0..SHAPES {
+                let mut pool = [0usize; SHAPES * MAX_LANES];
+                let mut n = 0;
+                for (s, (q, &k)) in queue.iter().zip(&fill).enumerate() {
+                    if family(s) == f {
+                        pool[n..n + k].copy_from_slice(&q[..k]);
+                        n += k;
                     }
+                }
+                let mut rest = &pool[..n];
+                while rest.len() >= width {
+                    group(&rest[..width], width, slots);
+                    rest = &rest[width..];
+                }
+                if rest.len() >= PAD_FROM {
+                    let mut idx = [rest[0]; MAX_LANES];
+                    idx[..rest.len()].copy_from_slice(rest);
+                    group(&idx[..width], rest.len(), slots);
                 } else {
-                    for &j in &q[..n] {
+                    for &j in rest {
                         slots[j].write(scalar(&cases[j]));
                     }
                 }
@@ -98,9 +121,11 @@ pub(crate) fn run<C, T>(
         }
     }
     // SAFETY: every index `i < cases.len()` entered exactly one queue position (or the
-    // first loop), and every position was written exactly once: by the kernel for its
-    // decided real lanes (its contract; a padded group's real lanes are the distinct
-    // leftovers, its padding is never written), else by `undecided`, or by `scalar`.
+    // first loop); a position left over at the end entered exactly one family's pool
+    // (each shape has one family, below SHAPES: asserted). Every position was written
+    // exactly once: by the kernel for its decided real lanes (its contract; a group's
+    // real lanes are distinct positions, a padded group's padding is never written),
+    // else by `undecided`, or by `scalar`.
     // (A panic before this line leaks the written answers; it cannot expose an
     // unwritten one.)
     unsafe { out.set_len(start + cases.len()) };
@@ -195,16 +220,62 @@ pub(crate) mod testing {
         (bits, out)
     }
 
+    /// A deterministic value in `[−1, 1)` for test data (SplitMix64 of `k`, scaled).
+    pub(crate) fn pseudo(k: u64) -> f64 {
+        let mut z = k.wrapping_add(1).wrapping_mul(0x9E37_79B9_7F4A_7C15);
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    }
+
+    /// A generic plane from the seed `k`: parametric, or implicit when `implicit`.
+    pub(crate) fn generic_plane(k: u64, implicit: bool) -> crate::geom::Plane<f64> {
+        let v = |j: u64| {
+            nalgebra::Vector3::new(
+                pseudo(k * 16 + j),
+                pseudo(k * 16 + j + 1),
+                pseudo(k * 16 + j + 2),
+            )
+        };
+        if implicit {
+            crate::geom::Plane::implicit(v(0), pseudo(k * 16 + 9)).unwrap()
+        } else {
+            crate::geom::Plane::parametric(v(3), v(6), v(10)).unwrap()
+        }
+    }
+
+    /// `kernel` decides every lane of `cases[..kernel.width]` and writes `scalar`'s
+    /// answer, which comes from the filter (checked first: the test is not vacuous).
+    pub(crate) fn assert_kernel_decides_all<C: std::fmt::Debug, X>(
+        kernel: &LaneKernel<C, crate::Certified<X>>,
+        cases: &[C],
+        placeholder: crate::Certified<X>,
+        scalar: impl Fn(&C) -> crate::Certified<X>,
+    ) where
+        X: Clone + PartialEq + std::fmt::Debug,
+    {
+        let w = kernel.width;
+        for c in &cases[..w] {
+            assert_eq!(scalar(c).arithmetic, crate::Arithmetic::Filter, "{c:?}");
+        }
+        let (bits, out) = run_once(kernel, cases, placeholder);
+        assert_eq!(bits, (1 << w) - 1, "decided lanes");
+        for (c, got) in cases.iter().zip(&out) {
+            assert_eq!(got, &scalar(c), "{c:?}");
+        }
+    }
+
     /// [`run`] with `lanes` answers every case as `scalar` does, in order.
     pub(crate) fn assert_run_equals_scalar<C: std::fmt::Debug, T: PartialEq + std::fmt::Debug>(
         cases: &[C],
         shape: impl Fn(&C) -> usize,
+        family: impl Fn(usize) -> usize,
         lanes: Option<LaneKernel<C, T>>,
         scalar: impl Fn(&C) -> T,
         undecided: impl Fn(&C) -> T,
     ) {
         let mut out = Vec::new();
-        run(cases, &mut out, shape, lanes, &scalar, undecided);
+        run(cases, &mut out, shape, family, lanes, &scalar, undecided);
         assert_eq!(out.len(), cases.len());
         for (c, got) in cases.iter().zip(&out) {
             assert_eq!(got, &scalar(c), "{c:?}");

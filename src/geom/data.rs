@@ -177,6 +177,18 @@ pub(crate) enum PlaneData<R> {
         n: V3<R>,
         d: R,
     },
+    /// Lane groups of mixed kinds ([`super::raw::MixedPlanes`]): both forms at once,
+    /// `f(x) = N·(x − o) + d`, with `o`, `u`, `v` zero in the implicit lanes and `d`
+    /// zero in the parametric ones. Adding or subtracting those exact zeros changes no
+    /// value (only, possibly, the sign of a zero), so each lane computes the value its
+    /// own kind computes.
+    General {
+        o: V3<R>,
+        u: V3<R>,
+        v: V3<R>,
+        n: V3<R>,
+        d: R,
+    },
 }
 
 impl<R: Ring> PlaneData<R> {
@@ -202,7 +214,9 @@ impl<R: Ring> PlaneData<R> {
     #[inline(always)]
     pub(crate) fn n(&self) -> &V3<R> {
         match self {
-            PlaneData::Param { n, .. } | PlaneData::Implicit { n, .. } => n,
+            PlaneData::Param { n, .. }
+            | PlaneData::Implicit { n, .. }
+            | PlaneData::General { n, .. } => n,
         }
     }
     /// `f(x) = N·(x − o)` or `n·x + d`: zero exactly on the plane, `N·x − h`.
@@ -211,6 +225,7 @@ impl<R: Ring> PlaneData<R> {
         match self {
             PlaneData::Param { o, n, .. } => dot3(n, &sub3(x, o)),
             PlaneData::Implicit { n, d } => dot3(n, x).plus(d),
+            PlaneData::General { o, n, d, .. } => dot3(n, &sub3(x, o)).plus(d),
         }
     }
     /// `w·f(x/w)` for the point given by homogeneous coordinates `(x, w)`, `w ≠ 0`: zero
@@ -220,6 +235,9 @@ impl<R: Ring> PlaneData<R> {
         match self {
             PlaneData::Param { o, n, .. } => dot3(n, &sub3(x, &scale3(w, o))),
             PlaneData::Implicit { n, d } => dot3(n, x).plus(&d.times(w)),
+            PlaneData::General { o, n, d, .. } => {
+                dot3(n, &sub3(x, &scale3(w, o))).plus(&d.times(w))
+            }
         }
     }
     /// `h` with the plane `N·x = h`.
@@ -227,14 +245,24 @@ impl<R: Ring> PlaneData<R> {
         match self {
             PlaneData::Param { o, n, .. } => dot3(n, o),
             PlaneData::Implicit { d, .. } => d.negate(),
+            PlaneData::General { o, n, d, .. } => dot3(n, o).minus(d),
         }
     }
-    /// The origin of a parametric plane.
+    /// The origin of a parametric plane (`None` for mixed lanes, whose kind is per
+    /// lane: their formulas take the reference point lane by lane).
     #[inline(always)]
     pub(crate) fn origin(&self) -> Option<&V3<R>> {
         match self {
             PlaneData::Param { o, .. } => Some(o),
-            PlaneData::Implicit { .. } => None,
+            PlaneData::Implicit { .. } | PlaneData::General { .. } => None,
+        }
+    }
+    /// The origin, zero for an implicit plane and in the implicit lanes of mixed ones.
+    #[inline(always)]
+    pub(crate) fn origin_or_zero(&self) -> V3<R> {
+        match self {
+            PlaneData::Param { o, .. } | PlaneData::General { o, .. } => o.clone(),
+            PlaneData::Implicit { .. } => [R::zero(), R::zero(), R::zero()],
         }
     }
 }

@@ -99,7 +99,7 @@ pub(crate) fn terms<R: Ring>(l: &LineData<R>, p: &PlaneData<R>) -> Terms<R> {
 pub(crate) fn terms_from<R: Ring>(l: &LineData<R>, p: &PlaneData<R>, den: R, f0: R) -> Terms<R> {
     let pnum = each!(i in [0, 1, 2] => l.o[i].times(&den).minus(&f0.times(&l.d[i])));
     let uvnum = match p {
-        PlaneData::Param { o, u, v, .. } => {
+        PlaneData::Param { o, u, v, .. } | PlaneData::General { o, u, v, .. } => {
             let w = sub3(&l.o, o);
             // det(w, s₂, c') = w·(s₂ × c'), det(s₁, w, c') = w·(c' × s₁): the cross
             // products of inputs are exact products, one rounding each.
@@ -263,12 +263,15 @@ struct Decisions<F: Lane> {
 /// The filter tier, written once for one case (`F = f64`) and lane groups (`F4`, `F8`): the
 /// formulas of [`terms_from`] in double-double, `N·c'` prepared as the denominator (its
 /// sign decided: the verdict), every output's correct rounding decided against the
-/// bounds `ε·scales` of the constants above.
+/// bounds `ε·scales` of the constants above. `implicit`: the lanes whose plane is
+/// implicit (in a group of mixed kinds, [`PlaneData::General`], whose parameters are
+/// left undecided there: the plane has none).
 #[inline(always)]
 fn decide<M: ProductMode, F: Lane>(
     l: &LineData<Dd<M, F>>,
     p: &PlaneData<Dd<M, F>>,
     [mp, ml, mg, gk]: [F; 4],
+    implicit: F::Mask,
 ) -> Option<Decisions<F>> {
     let d = dot3(p.n(), &l.d);
     let (den_ok, den) = Denominator::prepare(&d, bound(EPS_DEN, &[gk, ml]));
@@ -285,7 +288,7 @@ fn decide<M: ProductMode, F: Lane>(
         Some([un, vn]) => {
             let e_uv = bound(EPS_UVNUM, &[mp, mg, ml]);
             let uv = [decide_over(un, e_uv, &den), decide_over(vn, e_uv, &den)];
-            ok = ok & uv[0].ok & uv[1].ok;
+            ok = ok & (uv[0].ok & uv[1].ok | implicit);
             Some(uv)
         }
         None => None,
@@ -327,7 +330,12 @@ fn answer(
 #[inline(always)]
 fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePlane<Rounded>> {
     let (l, p) = (RawLine::new(line), RawPlane::new(plane));
-    let dc = decide(&l.data::<M>(), &p.data(), scales(&l, &p))?;
+    let dc = decide(
+        &l.data::<M>(),
+        &p.data(),
+        scales(&l, &p),
+        p.implicit_lanes(),
+    )?;
     if !dc.ok {
         return None;
     }
@@ -359,17 +367,20 @@ fn fast_lanes<M: ProductMode, F: Wide>(
     out: &mut [MaybeUninit<Certified<LinePlane<Rounded>>>],
 ) -> u32 {
     let c = |i: usize| cases[idx[i]];
-    let (Some(l), Some(p)) = (
-        RawLine::<F>::gather(|i| c(i).0),
-        RawPlane::<F>::gather(|i| c(i).1),
-    ) else {
-        // (not reached: a batch shape has one kind of line and of plane)
+    let p = RawPlane::<F>::gather(|i| c(i).1);
+    let Some(l) = RawLine::<F>::gather(|i| c(i).0) else {
+        // (not reached: a batch family has one kind of line)
         for (i, &j) in idx.iter().enumerate().take(real) {
             out[j].write(intersect_line_plane(c(i).0, c(i).1));
         }
         return (1 << real) - 1;
     };
-    let Some(dc) = decide(&l.data::<M>(), &p.data(), scales(&l, &p)) else {
+    let Some(dc) = decide(
+        &l.data::<M>(),
+        &p.data(),
+        scales(&l, &p),
+        p.implicit_lanes(),
+    ) else {
         return 0;
     };
     let ok = F::bits(dc.ok) & ((1 << real) - 1);
@@ -387,7 +398,11 @@ fn fast_lanes<M: ProductMode, F: Wide>(
     };
     for (i, &j) in idx.iter().enumerate().take(real) {
         if ok >> i & 1 == 1 {
-            let uv = uv.map(|[u, v]| [u.get(i), v.get(i)]);
+            // (in a mixed group, only the parametric lanes have parameters)
+            let uv = match (&uv, c(i).1) {
+                (Some([u, v]), Plane::Parametric { .. }) => Some([u.get(i), v.get(i)]),
+                _ => None,
+            };
             let p = [point[0].get(i), point[1].get(i), point[2].get(i)];
             out[j].write(filter_certified(answer(c(i).0, t.get(i), p, uv)));
         }
@@ -399,6 +414,12 @@ fn fast_lanes<M: ProductMode, F: Wide>(
 fn batch_shape((l, p): &LinePlaneCase) -> usize {
     usize::from(matches!(l, Linear::Segment(_))) * 2
         + usize::from(matches!(p, Plane::Implicit { .. }))
+}
+
+/// The batch family: lines and segments apart; planes of both kinds mix in one lane
+/// group ([`PlaneData::General`]).
+fn batch_family(shape: usize) -> usize {
+    shape / 2
 }
 
 /// Certified line ∩ plane for many cases: appends to `out`, in order, exactly the
@@ -414,6 +435,7 @@ pub fn intersect_line_plane_batch(
         cases,
         out,
         batch_shape,
+        batch_family,
         lanes,
         |&(l, p)| intersect_line_plane(l, p),
         |&(l, p)| exact_tiers(l, p),
@@ -448,6 +470,7 @@ mod tests {
         batch::testing::assert_run_equals_scalar(
             &cases,
             batch_shape,
+            batch_family,
             lanes,
             |&(l, p)| intersect_line_plane(l, p),
             |&(l, p)| exact_tiers(l, p),
@@ -499,6 +522,86 @@ mod tests {
                     assert_eq!(out[i], intersect_line_plane(cases[i].0, cases[i].1));
                 }
             }
+        }
+    }
+
+    /// A mixed lane computes the values of its own shape (so the bounds derived for the
+    /// shapes hold for it): for lines and segments with planes of either kind, the
+    /// scales and every numerator ([`terms_from`] on [`PlaneData::General`]; `(u, v)`
+    /// for the parametric planes) equal those of the shape's own formulas,
+    /// double-double part by part.
+    #[test]
+    fn mixed_terms_are_the_shapes_terms() {
+        use crate::geom::raw::MixedPlanes;
+        use crate::geom::Segment;
+        type D = Dd<crate::num::dd::WithFma>;
+        let v = |k: u64| {
+            let r = batch::testing::pseudo;
+            nalgebra::Vector3::new(r(k), r(k + 1), r(k + 2))
+        };
+        for seed in 0..40u64 {
+            let line = Line::new(v(1000 * seed), v(1000 * seed + 3)).unwrap();
+            let segment = Segment::new(v(1000 * seed + 6), v(1000 * seed + 9)).unwrap();
+            for l in [Linear::Line(&line), Linear::Segment(&segment)] {
+                for implicit in [false, true] {
+                    let p = batch::testing::generic_plane(1000 * seed + 20, implicit);
+                    let r = RawLine::new(l);
+                    let (u, m) = (RawPlane::new(&p), MixedPlanes::of(&p));
+                    let (mp, ml) = r.scales();
+                    let (mg, gk, mp) = m.scales(mp);
+                    assert_eq!(scales(&r, &u), [mp, ml, mg, gk]);
+                    let l: LineData<D> = r.data();
+                    let (pu, pm): (PlaneData<D>, PlaneData<D>) = (u.data(), m.data());
+                    let tu = terms(&l, &pu);
+                    let tm = terms(&l, &pm);
+                    assert_eq!((tu.den, tu.f0, tu.pnum), (tm.den, tm.f0, tm.pnum));
+                    if !implicit {
+                        assert_eq!(tu.uvnum, tm.uvnum);
+                    }
+                }
+            }
+        }
+    }
+
+    /// A lane group of one kind of line and mixed kinds of planes (parametric and
+    /// implicit in turn) is decided in every lane, with the scalar answers (`(u, v)`
+    /// only on the parametric planes).
+    #[test]
+    fn lane_kernel_decides_mixed_lanes() {
+        for max in [4, 8] {
+            let Some(kernel) = lane_kernel!(
+                fast_lanes,
+                LinePlaneCase,
+                Certified<LinePlane<Rounded>>,
+                max
+            ) else {
+                continue; // no AVX/FMA
+            };
+            let w = kernel.width;
+            let objs: Vec<(Line<f64>, Plane<f64>)> = (0..w)
+                .map(|i| {
+                    let s = 0.37 + i as f64;
+                    let l = Line::new([s, -2.3, 0.71].into(), [0.9, 0.33 + s, -1.21].into());
+                    let p = if i % 2 == 1 {
+                        Plane::implicit([1.1, -0.3 * s, 0.7].into(), s)
+                    } else {
+                        Plane::parametric(
+                            [0.3, -1.7, s].into(),
+                            [1.1, 0.2, -0.7].into(),
+                            [-0.4, 1.3, 0.6 * s].into(),
+                        )
+                    };
+                    (l.unwrap(), p.unwrap())
+                })
+                .collect();
+            let cases: Vec<LinePlaneCase> =
+                objs.iter().map(|(l, p)| (Linear::Line(l), p)).collect();
+            batch::testing::assert_kernel_decides_all(
+                &kernel,
+                &cases,
+                filter_certified(LinePlane::Parallel),
+                |&(l, p)| intersect_line_plane(l, p),
+            );
         }
     }
 

@@ -131,10 +131,45 @@ pub(crate) fn reference<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>) -> V3<R> {
         .unwrap_or_else(|| [R::zero(), R::zero(), R::zero()])
 }
 
+/// How a parameter line on plane `q` (origin `o`) finds `e = −f_other(o)` and
+/// `g = n·(x_r − o)`.
+enum AtOrigin<'a, R> {
+    /// `x_r = o`: `g = 0`, and `f_other(x_r)` is known.
+    Known(&'a R),
+    /// The other plane's origin is `x_r`: `−f_other(o) = N_o·(x_r − o)`, one
+    /// difference serves `e` and `g`.
+    OtherAtReference,
+    /// Mixed lanes ([`terms_mixed`]): `e` and `g` from their definitions, which in each
+    /// lane is the value one of the other two computes (in `Known` lanes `g` is an exact
+    /// zero; in `OtherAtReference` lanes `f_other(o) = N_o·(o − x_r)`, whose
+    /// differences of doubles and products are the exact negations).
+    Any,
+}
+
+// (by hand: derived, they would ask `R: Copy`)
+impl<R> Clone for AtOrigin<'_, R> {
+    fn clone(&self) -> Self {
+        *self
+    }
+}
+impl<R> Copy for AtOrigin<'_, R> {}
+
+impl<'a, R> AtOrigin<'a, R> {
+    /// In [`terms_from`]: `Known` when `x_r = o` (`f`: the other plane's value there),
+    /// else `OtherAtReference` (a parametric plane without its origin at `x_r` has the
+    /// other's there).
+    #[inline(always)]
+    fn of(here: bool, f: &'a R) -> Self {
+        if here {
+            AtOrigin::Known(f)
+        } else {
+            AtOrigin::OtherAtReference
+        }
+    }
+}
+
 /// Parameters on parametric plane `q` of the line of `q ∩ other`, with `n = N_q × N_o`
-/// when `on_a` (`q` is plane `a`), `n = N_o × N_q` otherwise. `other_at_origin` is
-/// `f_other(x_r)` when `x_r = o_q`; when it is `None`, `other` is parametric with origin
-/// `x_r` (the only other case `terms_from` produces).
+/// when `on_a` (`q` is plane `a`), `n = N_o × N_q` otherwise.
 #[inline(always)]
 fn param_terms<R: Ring>(
     q: &PlaneData<R>,
@@ -142,31 +177,28 @@ fn param_terms<R: Ring>(
     n: &V3<R>,
     x_r: &V3<R>,
     on_a: bool,
-    other_at_origin: Option<&R>,
+    at: AtOrigin<R>,
 ) -> Option<ParamTerms<R>> {
-    let PlaneData::Param { o, u, v, .. } = q else {
+    let (PlaneData::Param { o, u, v, .. } | PlaneData::General { o, u, v, .. }) = q else {
         return None;
     };
     let no = other.n();
     let (nu, nv) = (dot3(no, u), dot3(no, v));
     let (n_u, n_v) = (dot3(n, u), dot3(n, v));
-    let (un, vn) = match other_at_origin {
-        // x_r = o: g = 0 and e = −f_other(x_r), already known.
-        Some(f) => {
-            let e = f.negate();
-            (e.times(&n_v), e.times(&n_u).negate())
-        }
-        None => {
-            // Then `other`'s origin is x_r (see `terms_from`), so
-            // −f_other(o) = N_o·(x_r − o): one difference serves e and g.
+    let (e, g) = match at {
+        AtOrigin::Known(f) => (f.negate(), None),
+        AtOrigin::OtherAtReference => {
             let w = sub3(x_r, o);
-            let e = dot3(no, &w);
-            let g = dot3(n, &w);
-            (
-                e.times(&n_v).minus(&nv.times(&g)),
-                nu.times(&g).minus(&e.times(&n_u)),
-            )
+            (dot3(no, &w), Some(dot3(n, &w)))
         }
+        AtOrigin::Any => (other.value_at(o).negate(), Some(dot3(n, &sub3(x_r, o)))),
+    };
+    let (un, vn) = match g {
+        None => (e.times(&n_v), e.times(&n_u).negate()),
+        Some(g) => (
+            e.times(&n_v).minus(&nv.times(&g)),
+            nu.times(&g).minus(&e.times(&n_u)),
+        ),
     };
     Some(if on_a {
         ParamTerms {
@@ -199,8 +231,47 @@ pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>, 
     let at_a = !at_b && a.origin().is_some();
     let fa = if at_a { R::zero() } else { a.value_at(&x_r) };
     let fb = if at_b { R::zero() } else { b.value_at(&x_r) };
-    let ta = (!at_a).then(|| cross3(b.n(), &n));
-    let tb = (!at_b).then(|| cross3(&n, a.n()));
+    let (on_a, on_b) = (AtOrigin::of(at_a, &fb), AtOrigin::of(at_b, &fa));
+    terms_at(a, b, n, nn, &x_r, [&fa, &fb], [at_a, at_b], [on_a, on_b])
+}
+
+/// [`terms_from`] for lane groups of mixed kinds (`implicit_b`: the lanes where `b` is
+/// implicit): `x_r` lane by lane (`o_b`, else `o_a`, else 0: an implicit lane's origin
+/// is zero), both values `f(x_r)` computed — the one of the plane with origin `x_r` is
+/// an exact zero, its term changes no value — and the parameters from
+/// [`AtOrigin::Any`]. Each lane computes the values of its own shape.
+#[inline(always)]
+fn terms_mixed<M: ProductMode, F: Lane>(
+    a: &PlaneData<Dd<M, F>>,
+    b: &PlaneData<Dd<M, F>>,
+    n: V3<Dd<M, F>>,
+    nn: Dd<M, F>,
+    implicit_b: F::Mask,
+) -> Terms<Dd<M, F>> {
+    let (oa, ob) = (a.origin_or_zero(), b.origin_or_zero());
+    let x_r = each!(m in [0, 1, 2] => Dd::select(implicit_b, &oa[m], &ob[m]));
+    let (fa, fb) = (a.value_at(&x_r), b.value_at(&x_r));
+    let any = AtOrigin::Any;
+    terms_at(a, b, n, nn, &x_r, [&fa, &fb], [false, false], [any, any])
+}
+
+/// The numerators from the reference point `x_r` and `[f_a(x_r), f_b(x_r)]`; `skip`
+/// marks the plane whose origin is `x_r` (left out of the point), `at` how each
+/// parameter line finds its values.
+#[allow(clippy::too_many_arguments)]
+#[inline(always)]
+fn terms_at<R: Ring>(
+    a: &PlaneData<R>,
+    b: &PlaneData<R>,
+    n: V3<R>,
+    nn: R,
+    x_r: &V3<R>,
+    [fa, fb]: [&R; 2],
+    skip: [bool; 2],
+    at: [AtOrigin<R>; 2],
+) -> Terms<R> {
+    let ta = (!skip[0]).then(|| cross3(b.n(), &n));
+    let tb = (!skip[1]).then(|| cross3(&n, a.n()));
     let pnum = each!(i in [0, 1, 2] => {
         let mut acc = x_r[i].times(&nn);
         if let Some(ta) = &ta {
@@ -211,8 +282,8 @@ pub(crate) fn terms_from<R: Ring>(a: &PlaneData<R>, b: &PlaneData<R>, n: V3<R>, 
         }
         acc
     });
-    let on_a = param_terms(a, b, &n, &x_r, true, at_a.then_some(&fb));
-    let on_b = param_terms(b, a, &n, &x_r, false, at_b.then_some(&fa));
+    let on_a = param_terms(a, b, &n, x_r, true, at[0]);
+    let on_b = param_terms(b, a, &n, x_r, false, at[1]);
     Terms {
         n,
         nn,
@@ -414,8 +485,14 @@ impl ParamDecisions<f64> {
 /// parameter numerators on `a`: `P G_a^(ka+1) G_b^2kb` (on `b` symmetrically);
 /// parameter directions on `a`: `G_a G_b^kb`. The direction `n` is accepted only when
 /// its largest component is in `[2⁻⁹⁹⁹, 2⁹⁹⁹)` (else the exact tiers scale it).
+/// `MIXED`: a plane is [`RawPlane::Mixed`] (the numerators from [`terms_mixed`], which
+/// computes each lane's shape's values, so the same bounds hold); a constant, so that
+/// the uniform groups and the scalar path are compiled without that branch.
 #[inline(always)]
-fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Option<Decisions<F>> {
+fn decide<M: ProductMode, F: Lane, const MIXED: bool>(
+    a: &RawPlane<F>,
+    b: &RawPlane<F>,
+) -> Option<Decisions<F>> {
     let (ma, ka, mp) = a.scales(F::splat(SCALE_FLOOR));
     let (mb, kb, mp) = b.scales(mp);
     let (pa, pb) = (a.data::<M>(), b.data::<M>());
@@ -427,7 +504,12 @@ fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Option<D
     if !F::any(ok) {
         return None;
     }
-    let tm = terms_from(&pa, &pb, n, nn2);
+    let implicit = [a.implicit_lanes(), b.implicit_lanes()];
+    let tm = if MIXED {
+        terms_mixed(&pa, &pb, n, nn2, implicit[1])
+    } else {
+        terms_from(&pa, &pb, n, nn2)
+    };
     let e_n = bound(EPS_N, &[ka, kb]);
     let dir = each!(i in [0, 1, 2] => decide_value(&tm.n[i], e_n));
     let big = dir[0].c.abs().max(dir[1].c.abs()).max(dir[2].c.abs());
@@ -440,8 +522,8 @@ fn decide<M: ProductMode, F: Lane>(a: &RawPlane<F>, b: &RawPlane<F>) -> Option<D
     let e_p = bound(EPS_PNUM, &[mp, ka, ka, kb, kb]);
     let point = each!(i in [0, 1, 2] => decide_over(&tm.pnum[i], e_p, &nn));
     ok = ok & point[0].ok & point[1].ok & point[2].ok;
-    let on_a = param_line(&tm.on_a, &nn, [mp, ma, ka, kb], &mut ok);
-    let on_b = param_line(&tm.on_b, &nn, [mp, mb, kb, ka], &mut ok);
+    let on_a = param_line(&tm.on_a, &nn, [mp, ma, ka, kb], implicit[0], &mut ok);
+    let on_b = param_line(&tm.on_b, &nn, [mp, mb, kb, ka], implicit[1], &mut ok);
     Some(Decisions {
         ok,
         dir,
@@ -458,12 +540,14 @@ const DIR_MAX: f64 = 5.357543035931337e300;
 /// A plane's parameter line (§8 eq. (8.4)), decided (`None`: the plane has no
 /// parameters); `ok` is narrowed to the lanes where every part was decided. `scales`
 /// are `[m_p, m, k_q, k_o]`: origin scale, this plane's group scale, its degree and the
-/// other plane's.
+/// other plane's; in the `implicit` lanes (of a mixed group) the plane has no
+/// parameters and `ok` is left as it is.
 #[inline(always)]
 fn param_line<M: ProductMode, F: Lane>(
     t: &Option<ParamTerms<Dd<M, F>>>,
     nn: &Denominator<M, F>,
     [mp, m, kq, ko]: [F; 4],
+    implicit: F::Mask,
     ok: &mut F::Mask,
 ) -> Option<ParamDecisions<F>> {
     let t = t.as_ref()?;
@@ -479,14 +563,14 @@ fn param_line<M: ProductMode, F: Lane>(
             decide_value(&t.dir[1], e_dir),
         ],
     };
-    *ok = *ok & d.origin[0].ok & d.origin[1].ok & d.dir[0].ok & d.dir[1].ok;
+    *ok = *ok & (d.origin[0].ok & d.origin[1].ok & d.dir[0].ok & d.dir[1].ok | implicit);
     Some(d)
 }
 
 /// The filter tier for one case.
 #[inline(always)]
 fn fast<M: ProductMode>(a: &Plane<f64>, b: &Plane<f64>) -> Option<PlaneLine<Rounded>> {
-    let dc = decide::<M, f64>(&RawPlane::new(a), &RawPlane::new(b))?;
+    let dc = decide::<M, f64, false>(&RawPlane::new(a), &RawPlane::new(b))?;
     if !dc.ok {
         return None;
     }
@@ -541,17 +625,17 @@ fn fast_lanes<M: ProductMode, F: Wide>(
     out: &mut [MaybeUninit<Certified<PlanePlane<Rounded>>>],
 ) -> u32 {
     let c = |i: usize| cases[idx[i]];
-    let (Some(a), Some(b)) = (
+    let (a, b) = (
         RawPlane::<F>::gather(|i| c(i).0),
         RawPlane::<F>::gather(|i| c(i).1),
-    ) else {
-        // (not reached: a batch shape has one kind per plane)
-        for (i, &j) in idx.iter().enumerate().take(real) {
-            out[j].write(intersect_planes(c(i).0, c(i).1));
-        }
-        return (1 << real) - 1;
+    );
+    // (two instances: the uniform groups' straight-line code stays as it was)
+    let dc = if a.is_mixed() || b.is_mixed() {
+        decide::<M, F, true>(&a, &b)
+    } else {
+        decide::<M, F, false>(&a, &b)
     };
-    let Some(dc) = decide::<M, F>(&a, &b) else {
+    let Some(dc) = dc else {
         return 0;
     };
     let ok = F::bits(dc.ok) & ((1 << real) - 1);
@@ -569,8 +653,15 @@ fn fast_lanes<M: ProductMode, F: Wide>(
                 point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
                 dir: Vector3::new(dir[0].get(i), dir[1].get(i), dir[2].get(i)),
                 dir_exponent: 0,
-                on_a: on_a.as_ref().map(|p| p.get(i)),
-                on_b: on_b.as_ref().map(|p| p.get(i)),
+                // (in a mixed group, only the parametric lanes have parameters)
+                on_a: match (&on_a, c(i).0) {
+                    (Some(p), Plane::Parametric { .. }) => Some(p.get(i)),
+                    _ => None,
+                },
+                on_b: match (&on_b, c(i).1) {
+                    (Some(p), Plane::Parametric { .. }) => Some(p.get(i)),
+                    _ => None,
+                },
             })));
         }
     }
@@ -581,6 +672,12 @@ fn fast_lanes<M: ProductMode, F: Wide>(
 fn batch_shape((a, b): &PlanePlaneCase) -> usize {
     let implicit = |q: &Plane<f64>| usize::from(matches!(q, Plane::Implicit { .. }));
     implicit(a) | implicit(b) << 1
+}
+
+/// The batch family: one lane group may hold pairs of every shape (see
+/// [`terms_mixed`]).
+fn batch_family(_shape: usize) -> usize {
+    0
 }
 
 /// Certified plane ∩ plane for many cases: appends to `out`, in order, exactly the
@@ -596,6 +693,7 @@ pub fn intersect_planes_batch(
         cases,
         out,
         batch_shape,
+        batch_family,
         lanes,
         |&(a, b)| intersect_planes(a, b),
         |&(a, b)| exact_tiers(a, b),
@@ -653,6 +751,7 @@ mod tests {
         batch::testing::assert_run_equals_scalar(
             &cases,
             batch_shape,
+            batch_family,
             lanes,
             |&(a, b)| intersect_planes(a, b),
             |&(a, b)| exact_tiers(a, b),
@@ -694,6 +793,75 @@ mod tests {
                     assert!(matches!(out[i].value, PlanePlane::Line(_)));
                 }
             }
+        }
+    }
+
+    /// Mixed lanes compute the values of each lane's own shape (so the bounds derived
+    /// for the shapes hold for them): for every shape, the scales, `n`, `|n|²`, the point
+    /// numerators and the parameter lines of the parametric planes of a mixed lane
+    /// ([`terms_mixed`] on [`PlaneData::General`]) equal those of the shape's own
+    /// formulas, double-double part by part.
+    #[test]
+    fn mixed_terms_are_the_shapes_terms() {
+        use crate::geom::raw::MixedPlanes;
+        type D = Dd<crate::num::dd::WithFma>;
+        for shape in 0..4u64 {
+            for seed in 0..40 {
+                let plane = |j: u64| {
+                    batch::testing::generic_plane(100 * seed + 2 * shape + j, shape >> j & 1 == 1)
+                };
+                let (a, b) = (plane(0), plane(1));
+                let (ua, ub) = (RawPlane::new(&a), RawPlane::new(&b));
+                let (ma, mb) = (MixedPlanes::of(&a), MixedPlanes::of(&b));
+                let (sa, sb) = (ua.scales(SCALE_FLOOR), ma.scales(SCALE_FLOOR));
+                assert_eq!(sa, sb);
+                assert_eq!(ub.scales(sa.2), mb.scales(sb.2));
+                let (pa, pb): (PlaneData<D>, PlaneData<D>) = (ua.data(), ub.data());
+                let (qa, qb): (PlaneData<D>, PlaneData<D>) = (ma.data(), mb.data());
+                let (n, m) = (cross3(pa.n(), pb.n()), cross3(qa.n(), qb.n()));
+                assert_eq!(n, m);
+                let (nn, mm) = (dot3(&n, &n), dot3(&m, &m));
+                let tu = terms_from(&pa, &pb, n, nn);
+                let tm = terms_mixed(&qa, &qb, m, mm, mb.implicit);
+                assert_eq!((tu.nn, tu.pnum), (tm.nn, tm.pnum), "shape {shape}");
+                for (u, m, implicit) in [
+                    (&tu.on_a, &tm.on_a, ma.implicit),
+                    (&tu.on_b, &tm.on_b, mb.implicit),
+                ] {
+                    if !implicit {
+                        let (u, m) = (u.as_ref().unwrap(), m.as_ref().unwrap());
+                        assert_eq!((u.num, u.dir), (m.num, m.dir), "shape {shape}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// A lane group of mixed kinds (every pair of parametric and implicit planes, in
+    /// turn) is decided in every lane, with the scalar answers (parameter lines only on
+    /// the parametric planes of each lane).
+    #[test]
+    fn lane_kernel_decides_mixed_lanes() {
+        for max in [4, 8] {
+            let Some(kernel) = lane_kernel!(
+                fast_lanes,
+                PlanePlaneCase,
+                Certified<PlanePlane<Rounded>>,
+                max
+            ) else {
+                continue; // no AVX/FMA
+            };
+            let plane = batch::testing::generic_plane;
+            let planes: Vec<(Plane<f64>, Plane<f64>)> = (0..kernel.width as u64)
+                .map(|i| (plane(2 * i, i & 1 == 1), plane(2 * i + 1, i & 2 == 2)))
+                .collect();
+            let cases: Vec<PlanePlaneCase> = planes.iter().map(|(a, b)| (a, b)).collect();
+            batch::testing::assert_kernel_decides_all(
+                &kernel,
+                &cases,
+                filter_certified(PlanePlane::Parallel),
+                |&(a, b)| intersect_planes(a, b),
+            );
         }
     }
 

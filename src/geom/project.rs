@@ -111,7 +111,7 @@ pub(crate) fn plane_terms<R: Ring>(p: &V3<R>, q: &PlaneData<R>) -> PlaneTerms<R>
     let nn = dot3(n, n);
     let footnum = each!(i in [0, 1, 2] => p[i].times(&nn).minus(&n[i].times(&f)));
     let uv = match q {
-        PlaneData::Param { o, u, v, .. } => {
+        PlaneData::Param { o, u, v, .. } | PlaneData::General { o, u, v, .. } => {
             let w = sub3(p, o);
             let (g11, g12, g22) = (dot3(u, u), dot3(u, v), dot3(v, v));
             let (a, b) = (dot3(u, &w), dot3(v, &w));

@@ -10,8 +10,8 @@ use super::data::{LineData, Linear, PlaneData};
 use super::objects::Plane;
 use crate::num::dd::{Dd, ProductMode};
 use crate::num::filter::{extend_scale_of, scale_of};
-use crate::num::lane::{Lane, Wide};
-use crate::num::ring::{each, V3};
+use crate::num::lane::{Lane, Wide, MAX_LANES};
+use crate::num::ring::{cross3, each, V3};
 
 /// A line (origin, direction) or a segment (end points), coordinates as they are given.
 #[derive(Debug, Clone, Copy)]
@@ -20,11 +20,26 @@ pub(crate) enum RawLine<F> {
     Segment { a: V3<F>, b: V3<F> },
 }
 
-/// A parametric (origin, spanning vectors) or implicit (normal, `d`) plane.
+/// A parametric (origin, spanning vectors) or implicit (normal, `d`) plane; or, in a
+/// lane group only (the witness `F::Group` is uninhabited for one case), planes of both
+/// kinds.
 #[derive(Debug, Clone, Copy)]
-pub(crate) enum RawPlane<F> {
+pub(crate) enum RawPlane<F: Lane> {
     Param { o: V3<F>, u: V3<F>, v: V3<F> },
     Implicit { n: V3<F>, d: F },
+    Mixed(MixedPlanes<F>, F::Group),
+}
+
+/// Planes of both kinds in lanes: `implicit` marks the implicit lanes; in each lane the
+/// other kind's fields are zero.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct MixedPlanes<F: Lane> {
+    pub o: V3<F>,
+    pub u: V3<F>,
+    pub v: V3<F>,
+    pub n: V3<F>,
+    pub d: F,
+    pub implicit: F::Mask,
 }
 
 #[inline(always)]
@@ -137,10 +152,10 @@ impl RawPlane<f64> {
 }
 
 impl<F: Wide> RawPlane<F> {
-    /// `F::N` parametric, or `F::N` implicit, planes in lanes (plane of lane `i`:
-    /// `p(i)`); `None` when the kinds differ.
+    /// `F::N` planes in lanes (plane of lane `i`: `p(i)`): `Param` or `Implicit` when
+    /// they are all of one kind, else `Mixed`.
     #[inline(always)]
-    pub(crate) fn gather<'a>(p: impl Fn(usize) -> &'a Plane<f64>) -> Option<Self> {
+    pub(crate) fn gather<'a>(p: impl Fn(usize) -> &'a Plane<f64>) -> Self {
         let param = |i: usize| match p(i) {
             Plane::Parametric { origin, u, v } => Some((origin, u, v)),
             Plane::Implicit { .. } => None,
@@ -151,19 +166,102 @@ impl<F: Wide> RawPlane<F> {
         };
         if (0..F::N).all(|i| param(i).is_some()) {
             let q = |i: usize| param(i).expect("checked");
-            Some(RawPlane::Param {
+            return RawPlane::Param {
                 o: gather3(|i| q(i).0),
                 u: gather3(|i| q(i).1),
                 v: gather3(|i| q(i).2),
-            })
+            };
         } else if (0..F::N).all(|i| implicit(i).is_some()) {
             let q = |i: usize| implicit(i).expect("checked");
-            Some(RawPlane::Implicit {
+            return RawPlane::Implicit {
                 n: gather3(|i| q(i).0),
                 d: F::from_fn(|i| q(i).1),
-            })
+            };
+        }
+        // One pass over the lanes, a column each: 0–8 origin, u, v; 9–11 normal; 12 d;
+        // 13 the implicit lanes as 1.0 (the other kind's entries stay zero).
+        let mut cols = [[0.0; 14]; MAX_LANES];
+        let mut implicit = 0;
+        for (i, col) in cols.iter_mut().enumerate().take(F::N) {
+            match p(i) {
+                Plane::Parametric { origin, u, v } => {
+                    col[..3].copy_from_slice(origin.as_slice());
+                    col[3..6].copy_from_slice(u.as_slice());
+                    col[6..9].copy_from_slice(v.as_slice());
+                }
+                Plane::Implicit { normal, d } => {
+                    col[9..12].copy_from_slice(normal.as_slice());
+                    col[12] = *d;
+                    col[13] = 1.0;
+                    implicit += 1;
+                }
+            }
+        }
+        let row = |r: usize| F::from_fn(|i| cols[i][r]);
+        let v3 = |r: usize| [row(r), row(r + 1), row(r + 2)];
+        if implicit == 0 {
+            RawPlane::Param {
+                o: v3(0),
+                u: v3(3),
+                v: v3(6),
+            }
+        } else if implicit == F::N {
+            RawPlane::Implicit {
+                n: v3(9),
+                d: row(12),
+            }
         } else {
-            None
+            let mixed = MixedPlanes {
+                o: v3(0),
+                u: v3(3),
+                v: v3(6),
+                n: v3(9),
+                d: row(12),
+                implicit: row(13).equal(F::splat(1.0)),
+            };
+            RawPlane::Mixed(mixed, F::group())
+        }
+    }
+}
+
+/// The scales of a parametric plane (see [`RawPlane::scales`]).
+#[inline(always)]
+fn param_scales<F: Lane>(o: &V3<F>, u: &V3<F>, v: &V3<F>, mp: F) -> (F, F, F) {
+    let m = scale_of(u).max(scale_of(v));
+    (m, m * m, mp.max(scale_of(o)))
+}
+
+/// The scales of an implicit plane (see [`RawPlane::scales`]).
+#[inline(always)]
+fn implicit_scales<F: Lane>(n: &V3<F>, d: F, mp: F) -> (F, F, F) {
+    let m = scale_of(n);
+    (m, m, extend_scale_of(mp, d, m))
+}
+
+impl<F: Lane> MixedPlanes<F> {
+    /// Each lane's scales of its kind (see [`RawPlane::scales`]).
+    #[inline(always)]
+    pub(crate) fn scales(&self, mp: F) -> (F, F, F) {
+        let p = param_scales(&self.o, &self.u, &self.v, mp);
+        let i = implicit_scales(&self.n, self.d, mp);
+        let m = self.implicit;
+        (
+            F::select(m, i.0, p.0),
+            F::select(m, i.1, p.1),
+            F::select(m, i.2, p.2),
+        )
+    }
+    /// [`PlaneData::General`], with each lane's normal of its kind.
+    #[inline(always)]
+    pub(crate) fn data<M: ProductMode>(&self) -> PlaneData<Dd<M, F>> {
+        let (u, v, n) = (lift3(&self.u), lift3(&self.v), lift3::<M, F>(&self.n));
+        let uv = cross3(&u, &v);
+        PlaneData::General {
+            o: lift3(&self.o),
+            n: each!(k in [0, 1, 2] => Dd::select(self.implicit, &n[k], &uv[k])),
+            u,
+            v,
+            d: Dd::exact(self.d),
         }
     }
 }
@@ -171,21 +269,33 @@ impl<F: Wide> RawPlane<F> {
 impl<F: Lane> RawPlane<F> {
     /// The filter scales of a plane: `(m_G, m_G^k)` (`k = 2` parametric, `1` implicit)
     /// and the position scale `mp` extended by its origin (parametric) or by `|d|/m_n`
-    /// (implicit: `d` is in the units of normal × position).
+    /// (implicit: `d` is in the units of normal × position); mixed lanes take their
+    /// kind's.
     #[inline(always)]
     pub(crate) fn scales(&self, mp: F) -> (F, F, F) {
         match self {
-            RawPlane::Param { o, u, v } => {
-                let m = scale_of(u).max(scale_of(v));
-                (m, m * m, mp.max(scale_of(o)))
-            }
-            RawPlane::Implicit { n, d } => {
-                let m = scale_of(n);
-                (m, m, extend_scale_of(mp, *d, m))
-            }
+            RawPlane::Param { o, u, v } => param_scales(o, u, v, mp),
+            RawPlane::Implicit { n, d } => implicit_scales(n, *d, mp),
+            RawPlane::Mixed(m, _) => m.scales(mp),
         }
     }
-    /// The plane in double-double with its normal (`u × v` or the given normal).
+    /// The lanes holding an implicit plane.
+    #[inline(always)]
+    pub(crate) fn implicit_lanes(&self) -> F::Mask {
+        let (zero, one) = (F::splat(0.0), F::splat(1.0));
+        match self {
+            RawPlane::Param { .. } => one.less(zero),
+            RawPlane::Implicit { .. } => zero.less(one),
+            RawPlane::Mixed(m, _) => m.implicit,
+        }
+    }
+    /// True for planes of mixed kinds.
+    #[inline(always)]
+    pub(crate) fn is_mixed(&self) -> bool {
+        matches!(self, RawPlane::Mixed(..))
+    }
+    /// The plane in double-double with its normal (`u × v` or the given normal; mixed
+    /// lanes: [`PlaneData::General`], each lane's normal of its kind).
     #[inline(always)]
     pub(crate) fn data<M: ProductMode>(&self) -> PlaneData<Dd<M, F>> {
         match self {
@@ -193,6 +303,34 @@ impl<F: Lane> RawPlane<F> {
             RawPlane::Implicit { n, d } => PlaneData::Implicit {
                 n: lift3(n),
                 d: Dd::exact(*d),
+            },
+            RawPlane::Mixed(m, _) => m.data(),
+        }
+    }
+}
+
+#[cfg(test)]
+impl MixedPlanes<f64> {
+    /// One plane as a lane of a mixed group (its kind's fields, the other kind's zero),
+    /// for the tests that mixed lanes compute the values of each lane's kind.
+    pub(crate) fn of(p: &Plane<f64>) -> Self {
+        let zero = [0.0; 3];
+        match RawPlane::new(p) {
+            RawPlane::Param { o, u, v } => MixedPlanes {
+                o,
+                u,
+                v,
+                n: zero,
+                d: 0.0,
+                implicit: false,
+            },
+            RawPlane::Implicit { n, d } => MixedPlanes {
+                o: zero,
+                u: zero,
+                v: zero,
+                n,
+                d,
+                implicit: true,
             },
         }
     }

@@ -109,7 +109,6 @@ pub(crate) fn terms<R: Ring>(p: &[PlaneData<R>; 3]) -> Terms<R> {
 /// The point-case numerators, given [`det_terms`].
 #[inline(always)]
 pub(crate) fn terms_from<R: Ring>(p: &[PlaneData<R>; 3], c: &[V3<R>; 3], det: R) -> Terms<R> {
-    let n = [p[0].n(), p[1].n(), p[2].n()];
     // x_r is the origin of plane k0 (the first parametric one), where f_k0 vanishes:
     // its term is left out, and its parameters reuse the other two values f_i(x_r).
     let k0 = p.iter().position(|q| q.origin().is_some());
@@ -124,16 +123,60 @@ pub(crate) fn terms_from<R: Ring>(p: &[PlaneData<R>; 3], c: &[V3<R>; 3], det: R)
             p[i].value_at(&x_r)
         }
     });
+    terms_at(p, c, det, &x_r, &f, k0)
+}
+
+/// [`terms_from`] for lane groups of mixed kinds (`implicit`: each plane's implicit
+/// lanes): `x_r` is chosen lane by lane (the first parametric origin, else 0) and
+/// every `f_i(x_r)` is computed — `f_k0(x_r) = N·(o − o) + 0` is an exact zero, so
+/// its term changes no value — and each plane's parameters evaluate the other two
+/// planes at its origin, as `terms_from` does for the planes after `k0` and computes,
+/// at `x_r = o_k0`, for `k0`. Each lane therefore computes the values of its own
+/// shape.
+#[inline(always)]
+fn terms_mixed<M: ProductMode, F: Lane>(
+    p: &[PlaneData<Dd<M, F>>; 3],
+    c: &[V3<Dd<M, F>>; 3],
+    det: Dd<M, F>,
+    implicit: [F::Mask; 3],
+) -> Terms<Dd<M, F>> {
+    let o = [
+        p[0].origin_or_zero(),
+        p[1].origin_or_zero(),
+        p[2].origin_or_zero(),
+    ];
+    // (an implicit lane's origin is zero: o₂ there is 0 when all three are implicit)
+    let x_r = each!(m in [0, 1, 2] => Dd::select(
+        implicit[0],
+        &Dd::select(implicit[1], &o[2][m], &o[1][m]),
+        &o[0][m],
+    ));
+    let f = each!(i in [0, 1, 2] => p[i].value_at(&x_r));
+    terms_at(p, c, det, &x_r, &f, None)
+}
+
+/// The numerators from the reference point `x_r` and `f_i(x_r)`; `skip` names the
+/// plane with origin `x_r` (left out of the point, and its parameters reuse `f`).
+#[inline(always)]
+fn terms_at<R: Ring>(
+    p: &[PlaneData<R>; 3],
+    c: &[V3<R>; 3],
+    det: R,
+    x_r: &V3<R>,
+    f: &[R; 3],
+    skip: Option<usize>,
+) -> Terms<R> {
+    let n = [p[0].n(), p[1].n(), p[2].n()];
     let pnum = each!(m in [0, 1, 2] => {
         let mut acc = x_r[m].times(&det);
         for i in 0..3 {
-            if k0 != Some(i) {
+            if skip != Some(i) {
                 acc = acc.minus(&f[i].times(&c[i][m]));
             }
         }
         acc
     });
-    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k, (k0 == Some(k)).then_some(&f)));
+    let params = each!(k in [0, 1, 2] => plane_params(p, &n, k, (skip == Some(k)).then_some(f)));
     Terms { det, pnum, params }
 }
 
@@ -146,7 +189,7 @@ fn plane_params<R: Ring>(
     k: usize,
     f_at_origin: Option<&[R; 3]>,
 ) -> Option<V2<R>> {
-    let PlaneData::Param { o, u, v, .. } = &p[k] else {
+    let (PlaneData::Param { o, u, v, .. } | PlaneData::General { o, u, v, .. }) = &p[k] else {
         return None;
     };
     let (i, j) = ((k + 1) % 3, (k + 2) % 3);
@@ -309,8 +352,13 @@ struct Decisions<F: Lane> {
 /// groups (`F4`, `F8`). Groups `P` (origins, `|d|/m_n`), `G_0`, `G_1`, `G_2`; with
 /// `S_i = m_i^k_i` (`k = 2` parametric, 1 implicit) the degrees are: `D`: `S₀S₁S₂`;
 /// point numerators: `P S₀S₁S₂`; parameter numerators of plane `k`: `P S_i S_j m_k`.
+/// `MIXED`: some plane is [`RawPlane::Mixed`] (the numerators from [`terms_mixed`],
+/// which computes each lane's shape's values, so the same bounds hold); a constant, so
+/// that the uniform groups and the scalar path are compiled without that branch.
 #[inline(always)]
-fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Option<Decisions<F>> {
+fn decide<M: ProductMode, F: Lane, const MIXED: bool>(
+    raw: &[RawPlane<F>; 3],
+) -> Option<Decisions<F>> {
     let (m0, s0, mp) = raw[0].scales(F::splat(SCALE_MIN));
     let (m1, s1, mp) = raw[1].scales(mp);
     let (m2, s2, mp) = raw[2].scales(mp);
@@ -323,7 +371,16 @@ fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Option<Decisions<F
     if !F::any(ok) {
         return None;
     }
-    let tm = terms_from(&data, &c, d);
+    let implicit = [
+        raw[0].implicit_lanes(),
+        raw[1].implicit_lanes(),
+        raw[2].implicit_lanes(),
+    ];
+    let tm = if MIXED {
+        terms_mixed(&data, &c, d, implicit)
+    } else {
+        terms_from(&data, &c, d)
+    };
     let e_p = bound(EPS_PNUM, &[mp, s0, s1, s2]);
     let point = each!(i in [0, 1, 2] => decide_over(&tm.pnum[i], e_p, &det));
     ok = ok & point[0].ok & point[1].ok & point[2].ok;
@@ -331,7 +388,8 @@ fn decide<M: ProductMode, F: Lane>(raw: &[RawPlane<F>; 3]) -> Option<Decisions<F
         Some([un, vn]) => {
             let e = bound(EPS_PARAM, &[mp, s[(k + 1) % 3], s[(k + 2) % 3], m[k]]);
             let q = [decide_over(un, e, &det), decide_over(vn, e, &det)];
-            ok = ok & q[0].ok & q[1].ok;
+            // (mixed lanes: an implicit plane has no parameters to decide)
+            ok = ok & (q[0].ok & q[1].ok | implicit[k]);
             Some(q)
         }
         None => None,
@@ -348,7 +406,7 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
         RawPlane::new(&p[1]),
         RawPlane::new(&p[2]),
     ];
-    let dc = decide::<M, f64>(&raw)?;
+    let dc = decide::<M, f64, false>(&raw)?;
     if !dc.ok {
         return None;
     }
@@ -374,18 +432,17 @@ fn fast_lanes<M: ProductMode, F: Wide>(
     out: &mut [MaybeUninit<Certified<ThreePlanes<Rounded>>>],
 ) -> u32 {
     let c = |i: usize| &cases[idx[i]];
-    let (Some(r0), Some(r1), Some(r2)) = (
-        RawPlane::<F>::gather(|i| &c(i)[0]),
-        RawPlane::<F>::gather(|i| &c(i)[1]),
-        RawPlane::<F>::gather(|i| &c(i)[2]),
-    ) else {
-        // (not reached: a batch shape has one kind per plane)
-        for (i, &j) in idx.iter().enumerate().take(real) {
-            out[j].write(intersect_three_planes(c(i)));
-        }
-        return (1 << real) - 1;
+    let r0 = RawPlane::<F>::gather(|i| &c(i)[0]);
+    let r1 = RawPlane::<F>::gather(|i| &c(i)[1]);
+    let r2 = RawPlane::<F>::gather(|i| &c(i)[2]);
+    let raw = [r0, r1, r2];
+    // (two instances: the uniform groups' straight-line code stays as it was)
+    let dc = if raw.iter().any(RawPlane::is_mixed) {
+        decide::<M, F, true>(&raw)
+    } else {
+        decide::<M, F, false>(&raw)
     };
-    let Some(dc) = decide::<M, F>(&[r0, r1, r2]) else {
+    let Some(dc) = dc else {
         return 0;
     };
     let ok = F::bits(dc.ok) & ((1 << real) - 1);
@@ -404,8 +461,11 @@ fn fast_lanes<M: ProductMode, F: Wide>(
             out[j].write(filter_certified(ThreePlanes::Point {
                 point: Vector3::new(point[0].get(i), point[1].get(i), point[2].get(i)),
                 params: each!(k in [0, 1, 2] => match &params[k] {
-                    Some([u, v]) => Some(Vector2::new(u.get(i), v.get(i))),
-                    None => None,
+                    // (in a mixed group, only the parametric lanes have parameters)
+                    Some([u, v]) if matches!(c(i)[k], Plane::Parametric { .. }) => {
+                        Some(Vector2::new(u.get(i), v.get(i)))
+                    }
+                    _ => None,
                 }),
             }));
         }
@@ -417,6 +477,12 @@ fn fast_lanes<M: ProductMode, F: Wide>(
 fn batch_shape(p: &[Plane<f64>; 3]) -> usize {
     let implicit = |q: &Plane<f64>| usize::from(matches!(q, Plane::Implicit { .. }));
     implicit(&p[0]) | implicit(&p[1]) << 1 | implicit(&p[2]) << 2
+}
+
+/// The batch family: one lane group may hold triples of every shape (see
+/// [`terms_mixed`]).
+fn batch_family(_shape: usize) -> usize {
+    0
 }
 
 /// Certified three planes for many cases: appends to `out`, in order, exactly the
@@ -432,6 +498,7 @@ pub fn intersect_three_planes_batch(
         cases,
         out,
         batch_shape,
+        batch_family,
         lanes,
         intersect_three_planes,
         exact_tiers,
@@ -477,10 +544,89 @@ mod tests {
         batch::testing::assert_run_equals_scalar(
             &cases,
             batch_shape,
+            batch_family,
             lanes,
             intersect_three_planes,
             exact_tiers,
         );
+    }
+
+    /// Mixed lanes compute the values of each lane's own shape (what makes the
+    /// filter's bounds, derived for the shapes, hold for them): for every shape, the
+    /// scales, `D`, the point numerators and the parameter numerators of the parametric
+    /// planes of a mixed lane ([`terms_mixed`] on [`PlaneData::General`]) equal those of
+    /// the shape's own formulas, double-double part by part.
+    #[test]
+    fn mixed_terms_are_the_shapes_terms() {
+        use crate::geom::raw::MixedPlanes;
+        type D = Dd<crate::num::dd::WithFma>;
+        for shape in 0..8u64 {
+            for seed in 0..40 {
+                let p: [Plane<f64>; 3] = each!(j in [0, 1, 2] => batch::testing::generic_plane(
+                    100 * seed + 3 * shape + j as u64,
+                    shape >> j & 1 == 1,
+                ));
+                let uniform = p.clone().map(|q| RawPlane::new(&q));
+                let mixed = p.clone().map(|q| MixedPlanes::of(&q));
+                let mut mp = (SCALE_MIN, SCALE_MIN);
+                for (u, m) in uniform.iter().zip(&mixed) {
+                    let (a, b) = (u.scales(mp.0), m.scales(mp.1));
+                    assert_eq!(a, b);
+                    mp = (a.2, b.2);
+                }
+                let du: [PlaneData<D>; 3] = uniform.map(|r| r.data());
+                let dm: [PlaneData<D>; 3] = mixed.map(|r| r.data());
+                let ((cu, det_u), (cm, det_m)) = (det_terms(&du), det_terms(&dm));
+                assert_eq!(det_u, det_m);
+                let tu = terms_from(&du, &cu, det_u);
+                let implicit = mixed.map(|m| m.implicit);
+                let tm = terms_mixed(&dm, &cm, det_m, implicit);
+                assert_eq!(tu.pnum, tm.pnum, "shape {shape}");
+                for (k, ((u, m), implicit)) in
+                    tu.params.iter().zip(&tm.params).zip(implicit).enumerate()
+                {
+                    if !implicit {
+                        assert_eq!(u, m, "shape {shape}, plane {k}");
+                    }
+                }
+            }
+        }
+    }
+
+    /// A lane group of mixed kinds (lane `i` has shape `i mod 8`: every combination of
+    /// parametric and implicit planes) is decided in every lane, with the scalar answers
+    /// (parameters only on the parametric planes of each lane).
+    #[test]
+    fn lane_kernel_decides_mixed_lanes() {
+        for max in [4, 8] {
+            let Some(kernel) = lane_kernel!(
+                fast_lanes,
+                [Plane<f64>; 3],
+                Certified<ThreePlanes<Rounded>>,
+                max
+            ) else {
+                continue; // no AVX/FMA
+            };
+            let cases: Vec<[Plane<f64>; 3]> = (0..8)
+                .map(|k| {
+                    let p =
+                        |j: u64, bit: u64| batch::testing::generic_plane(3 * k + j, k & bit != 0);
+                    [p(0, 1), p(1, 2), p(2, 4)]
+                })
+                .collect();
+            // (four lanes: the first four shapes, then the other four)
+            for group in [&cases[..], &cases[4..]] {
+                batch::testing::assert_kernel_decides_all(
+                    &kernel,
+                    group,
+                    filter_certified(ThreePlanes::Empty),
+                    intersect_three_planes,
+                );
+                if kernel.width == 8 {
+                    break;
+                }
+            }
+        }
     }
 
     /// The lane kernel decides a lane group of generic triples of one shape and writes the scalar

@@ -138,6 +138,11 @@ impl<M: ProductMode, F: Lane> Dd<M, F> {
     pub fn exact(x: F) -> Self {
         Dd::new(x, F::splat(0.0))
     }
+    /// `if m { a } else { b }`, lane by lane (exact: both parts are taken as they are).
+    #[inline(always)]
+    pub fn select(m: F::Mask, a: &Self, b: &Self) -> Self {
+        Dd::new(F::select(m, a.h, b.h), F::select(m, a.l, b.l))
+    }
     /// `h + l` from its parts.
     #[inline(always)]
     pub fn from_parts(h: F, l: F) -> Self {

@@ -16,7 +16,7 @@
 //! (`a ≤ b`, never `!(a > b)`): a comparison with NaN is false, so NaN anywhere fails
 //! every acceptance test, as in the scalar code.
 
-use std::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
 
 /// A number type of the filter: `f64` or a group of `f64` lanes.
 pub trait Lane:
@@ -31,7 +31,12 @@ pub trait Lane:
     + 'static
 {
     /// The result of a comparison: `bool`, or one `bool` per lane.
-    type Mask: Copy + BitAnd<Output = Self::Mask>;
+    type Mask: Copy + std::fmt::Debug + BitAnd<Output = Self::Mask> + BitOr<Output = Self::Mask>;
+    /// A witness that values are lane groups: `()` for [`Wide`] types, uninhabited
+    /// ([`std::convert::Infallible`]) for `f64`. A variant that only lane groups can
+    /// hold (planes of mixed kinds, `geom::raw`) carries one, so that for one case the
+    /// compiler knows it cannot occur and its code costs the scalar path nothing.
+    type Group: Copy + std::fmt::Debug;
     /// `x` in every lane.
     fn splat(x: f64) -> Self;
     /// `self·b + c` with one rounding (the caller enables FMA; `f64::mul_add`).
@@ -57,6 +62,7 @@ pub trait Lane:
 
 impl Lane for f64 {
     type Mask = bool;
+    type Group = std::convert::Infallible;
     #[inline(always)]
     fn splat(x: f64) -> Self {
         x
@@ -123,6 +129,8 @@ pub trait Wide: Lane {
     fn store(self, out: &mut [f64; MAX_LANES]);
     /// A mask as bits (bit `i` set when lane `i` is true).
     fn bits(m: Self::Mask) -> u32;
+    /// The lane-group witness.
+    fn group() -> Self::Group;
 }
 
 /// Four `f64` lanes: one AVX register on x86-64, an array elsewhere.
@@ -221,8 +229,17 @@ impl BitAnd for M4 {
     }
 }
 
+impl BitOr for M4 {
+    type Output = M4;
+    #[inline(always)]
+    fn bitor(self, b: M4) -> M4 {
+        M4(imp::or(self.0, b.0))
+    }
+}
+
 impl Lane for F4 {
     type Mask = M4;
+    type Group = ();
     #[inline(always)]
     fn splat(x: f64) -> Self {
         F4(imp::splat(x))
@@ -279,6 +296,8 @@ impl Wide for F4 {
     fn bits(m: M4) -> u32 {
         m.bits()
     }
+    #[inline(always)]
+    fn group() {}
 }
 
 /// True when [`F4`] can run here: x86-64 with AVX and FMA (runtime detection);
@@ -347,6 +366,10 @@ mod imp {
     #[inline(always)]
     pub fn and(a: V, b: V) -> V {
         unsafe { _mm256_and_pd(a, b) }
+    }
+    #[inline(always)]
+    pub fn or(a: V, b: V) -> V {
+        unsafe { _mm256_or_pd(a, b) }
     }
     /// `!a & b`.
     #[inline(always)]
@@ -436,6 +459,9 @@ mod portable {
     }
     pub fn and(a: V, b: V) -> V {
         bits(a, b, |x, y| x & y)
+    }
+    pub fn or(a: V, b: V) -> V {
+        bits(a, b, |x, y| x | y)
     }
     pub fn andnot(a: V, b: V) -> V {
         bits(a, b, |x, y| !x & y)

@@ -8,7 +8,7 @@
 //! `#[target_feature(enable = "avx512f")]` function.
 
 use std::arch::x86_64::*;
-use std::ops::{Add, BitAnd, Div, Mul, Neg, Sub};
+use std::ops::{Add, BitAnd, BitOr, Div, Mul, Neg, Sub};
 
 use super::lane::{Lane, Wide, EXPONENT_BITS, MAX_LANES};
 
@@ -84,8 +84,17 @@ impl BitAnd for M8 {
     }
 }
 
+impl BitOr for M8 {
+    type Output = M8;
+    #[inline(always)]
+    fn bitor(self, b: M8) -> M8 {
+        M8(self.0 | b.0)
+    }
+}
+
 impl Lane for F8 {
     type Mask = M8;
+    type Group = ();
     #[inline(always)]
     fn splat(x: f64) -> Self {
         F8(unsafe { _mm512_set1_pd(x) })
@@ -150,6 +159,8 @@ impl Wide for F8 {
     fn bits(m: M8) -> u32 {
         u32::from(m.0)
     }
+    #[inline(always)]
+    fn group() {}
 }
 
 /// True when [`F8`] can run here (AVX-512F, runtime detection).
