@@ -3,8 +3,8 @@
 //! of `geocert::robust`), timed as plain f64 (`_f64`), geocert certified, geocert exact
 //! rationals (`_exact`, inputs already rational), CGAL Epick, CGAL Epeck with
 //! `to_double` (lazy approximation) and CGAL Epeck with `to_double(exact(x))`; and
-//! geocert certified through the batch entry points (`*_batch`, four cases at a time
-//! in AVX lanes).
+//! geocert certified through the batch entry points (`*_batch`, four or eight cases
+//! at a time in AVX or AVX-512 lanes, shapes pooled as `geom::batch` describes).
 //! Each iteration runs a batch of 64 cases; the tier deciding each case (filter on
 //! generic, integers on degenerate input) is checked before timing. BENCHMARKS.md has
 //! the ratios.

@@ -89,16 +89,18 @@ pub(crate) fn run<C, T>(
             // What is left of the shapes of each family, pooled: full lane groups, then
             // the rest in a lane group padded with copies of its first case when that
             // is cheaper than the scalar path (three cases or more), else case by case.
-            // (every shape in one family below SHAPES: each leftover is answered once)
+            // (each shape's family taken once, below SHAPES: each leftover is pooled
+            // exactly once)
+            let families: [usize; SHAPES] = std::array::from_fn(&family);
             assert!(
-                (0..SHAPES).all(|s| family(s) < SHAPES),
+                families.iter().all(|&f| f < SHAPES),
                 "a family out of range"
             );
             for f in 0..SHAPES {
                 let mut pool = [0usize; SHAPES * MAX_LANES];
                 let mut n = 0;
-                for (s, (q, &k)) in queue.iter().zip(&fill).enumerate() {
-                    if family(s) == f {
+                for ((q, &k), &fq) in queue.iter().zip(&fill).zip(&families) {
+                    if fq == f {
                         pool[n..n + k].copy_from_slice(&q[..k]);
                         n += k;
                     }
@@ -122,7 +124,8 @@ pub(crate) fn run<C, T>(
     }
     // SAFETY: every index `i < cases.len()` entered exactly one queue position (or the
     // first loop); a position left over at the end entered exactly one family's pool
-    // (each shape has one family, below SHAPES: asserted). Every position was written
+    // (each shape's family is read once into `families`, and is below SHAPES:
+    // asserted). Every position was written
     // exactly once: by the kernel for its decided real lanes (its contract; a group's
     // real lanes are distinct positions, a padded group's padding is never written),
     // else by `undecided`, or by `scalar`.
