@@ -8,9 +8,10 @@
 //! bit for bit, what the scalar filter computes for its case, so a lane decides exactly
 //! when the scalar filter would. What is left over of the shapes at the end is pooled
 //! by *family* (the shapes one lane group may mix: planes of both kinds, written as
-//! [`super::data::PlaneData::General`], whose lanes compute the values of their own
-//! shape — equal as numbers, only the sign of a zero may differ — tested part by part
-//! in each operation) into full lane groups, then one padded lane group (three cases or
+//! [`super::data::PlaneData::General`], lines with segments as
+//! [`super::raw::MixedLines`]; their lanes compute the values of their own shape —
+//! equal as numbers, only the sign of a zero may differ — tested part by part in each
+//! operation) into full lane groups, then one padded lane group (three cases or
 //! more) or case by case. Lanes the filter cannot decide go to the exact tiers; on a
 //! CPU without AVX and FMA every case takes the scalar path. Each answer is therefore
 //! the answer of the scalar entry point for that case (tested in

@@ -368,13 +368,7 @@ fn fast_lanes<M: ProductMode, F: Wide>(
 ) -> u32 {
     let c = |i: usize| cases[idx[i]];
     let p = RawPlane::<F>::gather(|i| c(i).1);
-    let Some(l) = RawLine::<F>::gather(|i| c(i).0) else {
-        // (not reached: a batch family has one kind of line)
-        for (i, &j) in idx.iter().enumerate().take(real) {
-            out[j].write(intersect_line_plane(c(i).0, c(i).1));
-        }
-        return (1 << real) - 1;
-    };
+    let l = RawLine::<F>::gather(|i| c(i).0);
     let Some(dc) = decide(
         &l.data::<M>(),
         &p.data(),
@@ -416,10 +410,11 @@ fn batch_shape((l, p): &LinePlaneCase) -> usize {
         + usize::from(matches!(p, Plane::Implicit { .. }))
 }
 
-/// The batch family: lines and segments apart; planes of both kinds mix in one lane
-/// group ([`PlaneData::General`]).
-fn batch_family(shape: usize) -> usize {
-    shape / 2
+/// The batch family: one lane group may hold cases of every shape (lines and
+/// segments: [`crate::geom::raw::MixedLines`]; planes of both kinds:
+/// [`PlaneData::General`]).
+fn batch_family(_shape: usize) -> usize {
+    0
 }
 
 /// Certified line ∩ plane for many cases: appends to `out`, in order, exactly the
@@ -527,33 +522,28 @@ mod tests {
 
     /// A mixed lane computes the values of its own shape (so the bounds derived for the
     /// shapes hold for it): for lines and segments with planes of either kind, the
-    /// scales and every numerator ([`terms_from`] on [`PlaneData::General`]; `(u, v)`
-    /// for the parametric planes) equal those of the shape's own formulas,
-    /// double-double part by part.
+    /// scales and every numerator (lines and segments as [`MixedLines`], planes as
+    /// [`PlaneData::General`]; `(u, v)` for the parametric planes) equal those of the
+    /// shape's own formulas, double-double part by part.
     #[test]
     fn mixed_terms_are_the_shapes_terms() {
-        use crate::geom::raw::MixedPlanes;
-        use crate::geom::Segment;
+        use crate::geom::raw::{MixedLines, MixedPlanes};
         type D = Dd<crate::num::dd::WithFma>;
-        let v = |k: u64| {
-            let r = batch::testing::pseudo;
-            nalgebra::Vector3::new(r(k), r(k + 1), r(k + 2))
-        };
         for seed in 0..40u64 {
-            let line = Line::new(v(1000 * seed), v(1000 * seed + 3)).unwrap();
-            let segment = Segment::new(v(1000 * seed + 6), v(1000 * seed + 9)).unwrap();
+            let (line, segment) = segment_and_line(seed);
             for l in [Linear::Line(&line), Linear::Segment(&segment)] {
                 for implicit in [false, true] {
                     let p = batch::testing::generic_plane(1000 * seed + 20, implicit);
-                    let r = RawLine::new(l);
+                    let (r, ml) = (RawLine::new(l), MixedLines::of(l));
                     let (u, m) = (RawPlane::new(&p), MixedPlanes::of(&p));
-                    let (mp, ml) = r.scales();
+                    let (mp, ml_scale) = ml.scales();
                     let (mg, gk, mp) = m.scales(mp);
-                    assert_eq!(scales(&r, &u), [mp, ml, mg, gk]);
-                    let l: LineData<D> = r.data();
+                    assert_eq!(scales(&r, &u), [mp, ml_scale, mg, gk]);
+                    let (lu, lm): (LineData<D>, LineData<D>) = (r.data(), ml.data());
+                    assert_eq!((&lu.o, &lu.d), (&lm.o, &lm.d));
                     let (pu, pm): (PlaneData<D>, PlaneData<D>) = (u.data(), m.data());
-                    let tu = terms(&l, &pu);
-                    let tm = terms(&l, &pm);
+                    let tu = terms(&lu, &pu);
+                    let tm = terms(&lm, &pm);
                     assert_eq!((tu.den, tu.f0, tu.pnum), (tm.den, tm.f0, tm.pnum));
                     if !implicit {
                         assert_eq!(tu.uvnum, tm.uvnum);
@@ -563,9 +553,21 @@ mod tests {
         }
     }
 
-    /// A lane group of one kind of line and mixed kinds of planes (parametric and
-    /// implicit in turn) is decided in every lane, with the scalar answers (`(u, v)`
-    /// only on the parametric planes).
+    /// A generic line and segment from the seed `k`.
+    fn segment_and_line(k: u64) -> (Line<f64>, crate::geom::Segment<f64>) {
+        let v = |j: u64| {
+            let r = batch::testing::pseudo;
+            nalgebra::Vector3::new(r(1000 * k + j), r(1000 * k + j + 1), r(1000 * k + j + 2))
+        };
+        (
+            Line::new(v(0), v(3)).unwrap(),
+            crate::geom::Segment::new(v(6), v(9)).unwrap(),
+        )
+    }
+
+    /// A lane group of lines and segments with planes of both kinds (every combination
+    /// in turn) is decided in every lane, with the scalar answers (`(u, v)` only on the
+    /// parametric planes; the point outside a segment's domain where it is).
     #[test]
     fn lane_kernel_decides_mixed_lanes() {
         for max in [4, 8] {
@@ -577,25 +579,25 @@ mod tests {
             ) else {
                 continue; // no AVX/FMA
             };
-            let w = kernel.width;
-            let objs: Vec<(Line<f64>, Plane<f64>)> = (0..w)
+            let w = kernel.width as u64;
+            let objs: Vec<_> = (0..w)
                 .map(|i| {
-                    let s = 0.37 + i as f64;
-                    let l = Line::new([s, -2.3, 0.71].into(), [0.9, 0.33 + s, -1.21].into());
-                    let p = if i % 2 == 1 {
-                        Plane::implicit([1.1, -0.3 * s, 0.7].into(), s)
-                    } else {
-                        Plane::parametric(
-                            [0.3, -1.7, s].into(),
-                            [1.1, 0.2, -0.7].into(),
-                            [-0.4, 1.3, 0.6 * s].into(),
-                        )
-                    };
-                    (l.unwrap(), p.unwrap())
+                    let p = batch::testing::generic_plane(1000 * i + 20, i & 1 == 1);
+                    (segment_and_line(i), p)
                 })
                 .collect();
-            let cases: Vec<LinePlaneCase> =
-                objs.iter().map(|(l, p)| (Linear::Line(l), p)).collect();
+            let cases: Vec<LinePlaneCase> = objs
+                .iter()
+                .enumerate()
+                .map(|(i, ((l, s), p))| {
+                    let l = if i & 2 == 2 {
+                        Linear::Segment(s)
+                    } else {
+                        Linear::Line(l)
+                    };
+                    (l, p)
+                })
+                .collect();
             batch::testing::assert_kernel_decides_all(
                 &kernel,
                 &cases,

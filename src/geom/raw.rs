@@ -13,11 +13,25 @@ use crate::num::filter::{extend_scale_of, scale_of};
 use crate::num::lane::{Lane, Wide, MAX_LANES};
 use crate::num::ring::{cross3, each, V3};
 
-/// A line (origin, direction) or a segment (end points), coordinates as they are given.
+/// A line (origin, direction) or a segment (end points), coordinates as they are given;
+/// or, in a lane group only (the witness `F::Group` is uninhabited for one case), lines
+/// and segments together.
 #[derive(Debug, Clone, Copy)]
-pub(crate) enum RawLine<F> {
+pub(crate) enum RawLine<F: Lane> {
     Line { o: V3<F>, d: V3<F> },
     Segment { a: V3<F>, b: V3<F> },
+    Mixed(MixedLines<F>, F::Group),
+}
+
+/// Lines and segments in lanes: `o` is a line's origin or a segment's first end, `d` a
+/// line's direction (zero for a segment), `b` a segment's second end (zero for a
+/// line); `segment` marks the segment lanes.
+#[derive(Debug, Clone, Copy)]
+pub(crate) struct MixedLines<F: Lane> {
+    pub o: V3<F>,
+    pub d: V3<F>,
+    pub b: V3<F>,
+    pub segment: F::Mask,
 }
 
 /// A parametric (origin, spanning vectors) or implicit (normal, `d`) plane; or, in a
@@ -76,10 +90,10 @@ impl RawLine<f64> {
 }
 
 impl<F: Wide> RawLine<F> {
-    /// `F::N` lines, or `F::N` segments, in lanes (object of lane `i`: `l(i)`); `None`
-    /// when the kinds differ.
+    /// `F::N` lines or segments in lanes (object of lane `i`: `l(i)`): `Line` or
+    /// `Segment` when they are all of one kind, else `Mixed`.
     #[inline(always)]
-    pub(crate) fn gather<'a>(l: impl Fn(usize) -> Linear<'a, f64>) -> Option<Self> {
+    pub(crate) fn gather<'a>(l: impl Fn(usize) -> Linear<'a, f64>) -> Self {
         let line = |i: usize| match l(i) {
             Linear::Line(x) => Some(x),
             Linear::Segment(_) => None,
@@ -90,18 +104,73 @@ impl<F: Wide> RawLine<F> {
         };
         if (0..F::N).all(|i| line(i).is_some()) {
             let q = |i: usize| line(i).expect("checked");
-            Some(RawLine::Line {
+            return RawLine::Line {
                 o: gather3(|i| q(i).origin()),
                 d: gather3(|i| q(i).dir()),
-            })
+            };
         } else if (0..F::N).all(|i| segment(i).is_some()) {
             let q = |i: usize| segment(i).expect("checked");
-            Some(RawLine::Segment {
+            return RawLine::Segment {
                 a: gather3(|i| q(i).a()),
                 b: gather3(|i| q(i).b()),
-            })
-        } else {
-            None
+            };
+        }
+        // One pass over the lanes, a column each: 0–2 o, 3–5 d, 6–8 b, 9 the segment
+        // lanes as 1.0 (the other kind's entries stay zero).
+        let mut cols = [[0.0; 10]; MAX_LANES];
+        for (i, col) in cols.iter_mut().enumerate().take(F::N) {
+            match l(i) {
+                Linear::Line(x) => {
+                    col[..3].copy_from_slice(x.origin().as_slice());
+                    col[3..6].copy_from_slice(x.dir().as_slice());
+                }
+                Linear::Segment(x) => {
+                    col[..3].copy_from_slice(x.a().as_slice());
+                    col[6..9].copy_from_slice(x.b().as_slice());
+                    col[9] = 1.0;
+                }
+            }
+        }
+        let row = |r: usize| F::from_fn(|i| cols[i][r]);
+        let v3 = |r: usize| [row(r), row(r + 1), row(r + 2)];
+        let mixed = MixedLines {
+            o: v3(0),
+            d: v3(3),
+            b: v3(6),
+            segment: row(9).equal(F::splat(1.0)),
+        };
+        RawLine::Mixed(mixed, F::group())
+    }
+}
+
+/// The scales of a segment (see [`RawLine::scales`]).
+#[inline(always)]
+fn segment_scales<F: Lane>(a: &V3<F>, b: &V3<F>) -> (F, F) {
+    let m = scale_of(a).max(scale_of(b));
+    (m, m)
+}
+
+impl<F: Lane> MixedLines<F> {
+    /// Each lane's scales of its kind (see [`RawLine::scales`]).
+    #[inline(always)]
+    pub(crate) fn scales(&self) -> (F, F) {
+        let (lp, ll) = (scale_of(&self.o), scale_of(&self.d));
+        let (sp, sl) = segment_scales(&self.o, &self.b);
+        (
+            F::select(self.segment, sp, lp),
+            F::select(self.segment, sl, ll),
+        )
+    }
+    /// Each lane's line in double-double: a line's `d`, a segment's `b − a` (as
+    /// [`LineData::segment`] computes it).
+    #[inline(always)]
+    pub(crate) fn data<M: ProductMode>(&self) -> LineData<Dd<M, F>> {
+        let (o, d) = (lift3(&self.o), lift3::<M, F>(&self.d));
+        let ba = LineData::segment(o, lift3(&self.b)).d;
+        LineData {
+            o,
+            d: each!(k in [0, 1, 2] => Dd::select(self.segment, &ba[k], &d[k])),
+            range: None,
         }
     }
 }
@@ -113,10 +182,8 @@ impl<F: Lane> RawLine<F> {
     pub(crate) fn scales(&self) -> (F, F) {
         match self {
             RawLine::Line { o, d } => (scale_of(o), scale_of(d)),
-            RawLine::Segment { a, b } => {
-                let m = scale_of(a).max(scale_of(b));
-                (m, m)
-            }
+            RawLine::Segment { a, b } => segment_scales(a, b),
+            RawLine::Mixed(m, _) => m.scales(),
         }
     }
     /// The line in double-double: `o + t·d` (a segment: `a + t(b − a)`), range left out.
@@ -129,6 +196,7 @@ impl<F: Lane> RawLine<F> {
                 range: None,
             },
             RawLine::Segment { a, b } => LineData::segment(lift3(a), lift3(b)),
+            RawLine::Mixed(m, _) => m.data(),
         }
     }
 }
@@ -331,6 +399,29 @@ impl MixedPlanes<f64> {
                 n,
                 d,
                 implicit: true,
+            },
+        }
+    }
+}
+
+#[cfg(test)]
+impl MixedLines<f64> {
+    /// One line or segment as a lane of a mixed group, for the tests that mixed lanes
+    /// compute the values of each lane's kind.
+    pub(crate) fn of(l: Linear<f64>) -> Self {
+        let zero = [0.0; 3];
+        match RawLine::new(l) {
+            RawLine::Line { o, d } => MixedLines {
+                o,
+                d,
+                b: zero,
+                segment: false,
+            },
+            RawLine::Segment { a, b } => MixedLines {
+                o: a,
+                d: zero,
+                b,
+                segment: true,
             },
         }
     }
