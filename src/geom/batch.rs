@@ -7,11 +7,11 @@
 //! is the scalar filter's formula instantiated for the lane type — every lane computes,
 //! bit for bit, what the scalar filter computes for its case, so a lane decides exactly
 //! when the scalar filter would. What is left over of the shapes at the end is pooled
-//! by *family* (the shapes one lane group may mix: planes of both kinds, written as
+//! into lane groups of mixed shapes (planes of both kinds written as
 //! [`super::data::PlaneData::General`], lines with segments as
 //! [`super::raw::MixedLines`]; their lanes compute the values of their own shape —
 //! equal as numbers, only the sign of a zero may differ — tested part by part in each
-//! operation) into full lane groups, then one padded lane group (three cases or
+//! operation): full lane groups, then one padded lane group (three cases or
 //! more) or case by case. Lanes the filter cannot decide go to the exact tiers; on a
 //! CPU without AVX and FMA every case takes the scalar path. Each answer is therefore
 //! the answer of the scalar entry point for that case (tested in
@@ -24,7 +24,7 @@ use crate::num::lane::MAX_LANES;
 /// Number of shape queues (three planes: 2³ shapes).
 const SHAPES: usize = 8;
 
-/// The fewest cases left over in a family's pool that still go through a (padded) lane
+/// The fewest cases left over in the pool that still go through a (padded) lane
 /// group: measured, a lane group of 4 or 8 costs about what three scalar calls cost.
 const PAD_FROM: usize = 3;
 
@@ -40,18 +40,16 @@ pub(crate) struct LaneKernel<C, T> {
 /// `(cases, idx, real, out) -> decided lanes` (see [`LaneKernel`]).
 pub(crate) type LaneFn<C, T> = fn(&[C], &[usize], usize, &mut [MaybeUninit<T>]) -> u32;
 
-/// Append the answers for `cases` to `out`, in order. `shape(c) < 8` groups cases that
-/// one lane kernel can take together; `family(shape)` groups shapes the kernel can also
-/// mix in one lane group (what is left over of each shape is pooled by family); `lanes`
-/// (when the CPU can run it) decides a lane group; `scalar` answers one case (the full
-/// certified path), and `undecided` answers a case the lane filter did not decide: the
-/// exact tiers, since the scalar filter computes the same values and would not decide
-/// it either.
+/// Append the answers for `cases` to `out`, in order. `shape(c) < 8` queues cases of one
+/// shape together (what is left over of the shapes at the end is pooled: the kernels
+/// also take lane groups of mixed shapes); `lanes` (when the CPU can run it) decides a
+/// lane group; `scalar` answers one case (the full certified path), and `undecided`
+/// answers a case the lane filter did not decide: the exact tiers, since the scalar
+/// filter computes the same values and would not decide it either.
 pub(crate) fn run<C, T>(
     cases: &[C],
     out: &mut Vec<T>,
     shape: impl Fn(&C) -> usize,
-    family: impl Fn(usize) -> usize,
     lanes: Option<LaneKernel<C, T>>,
     scalar: impl Fn(&C) -> T,
     undecided: impl Fn(&C) -> T,
@@ -87,51 +85,38 @@ pub(crate) fn run<C, T>(
                     group(&queue[s][..width], width, slots);
                 }
             }
-            // What is left of the shapes of each family, pooled: full lane groups, then
-            // the rest in a lane group padded with copies of its first case when that
-            // is cheaper than the scalar path (three cases or more), else case by case.
-            // (each shape's family taken once, below SHAPES: each leftover is pooled
-            // exactly once)
-            let families: [usize; SHAPES] = std::array::from_fn(&family);
-            assert!(
-                families.iter().all(|&f| f < SHAPES),
-                "a family out of range"
-            );
-            for f in 0..SHAPES {
-                let mut pool = [0usize; SHAPES * MAX_LANES];
-                let mut n = 0;
-                for ((q, &k), &fq) in queue.iter().zip(&fill).zip(&families) {
-                    if fq == f {
-                        pool[n..n + k].copy_from_slice(&q[..k]);
-                        n += k;
-                    }
-                }
-                let mut rest = &pool[..n];
-                while rest.len() >= width {
-                    group(&rest[..width], width, slots);
-                    rest = &rest[width..];
-                }
-                if rest.len() >= PAD_FROM {
-                    let mut idx = [rest[0]; MAX_LANES];
-                    idx[..rest.len()].copy_from_slice(rest);
-                    group(&idx[..width], rest.len(), slots);
-                } else {
-                    for &j in rest {
-                        slots[j].write(scalar(&cases[j]));
-                    }
+            // What is left of the shapes, pooled (a lane group may mix shapes): full lane
+            // groups, then the rest in a lane group padded with copies of its first case
+            // when that is cheaper than the scalar path (three cases or more), else case
+            // by case.
+            let mut pool = [0usize; SHAPES * MAX_LANES];
+            let mut n = 0;
+            for (q, &k) in queue.iter().zip(&fill) {
+                pool[n..n + k].copy_from_slice(&q[..k]);
+                n += k;
+            }
+            let mut rest = &pool[..n];
+            while rest.len() >= width {
+                group(&rest[..width], width, slots);
+                rest = &rest[width..];
+            }
+            if rest.len() >= PAD_FROM {
+                let mut idx = [rest[0]; MAX_LANES];
+                idx[..rest.len()].copy_from_slice(rest);
+                group(&idx[..width], rest.len(), slots);
+            } else {
+                for &j in rest {
+                    slots[j].write(scalar(&cases[j]));
                 }
             }
         }
     }
     // SAFETY: every index `i < cases.len()` entered exactly one queue position (or the
-    // first loop); a position left over at the end entered exactly one family's pool
-    // (each shape's family is read once into `families`, and is below SHAPES:
-    // asserted). Every position was written
-    // exactly once: by the kernel for its decided real lanes (its contract; a group's
-    // real lanes are distinct positions, a padded group's padding is never written),
-    // else by `undecided`, or by `scalar`.
-    // (A panic before this line leaks the written answers; it cannot expose an
-    // unwritten one.)
+    // first loop); a position left over at the end entered the pool once. Every
+    // position was written exactly once: by the kernel for its decided real lanes (its
+    // contract; a group's real lanes are distinct positions, a padded group's padding
+    // is never written), else by `undecided`, or by `scalar`. (A panic before this line
+    // leaks the written answers; it cannot expose an unwritten one.)
     unsafe { out.set_len(start + cases.len()) };
 }
 
@@ -273,13 +258,12 @@ pub(crate) mod testing {
     pub(crate) fn assert_run_equals_scalar<C: std::fmt::Debug, T: PartialEq + std::fmt::Debug>(
         cases: &[C],
         shape: impl Fn(&C) -> usize,
-        family: impl Fn(usize) -> usize,
         lanes: Option<LaneKernel<C, T>>,
         scalar: impl Fn(&C) -> T,
         undecided: impl Fn(&C) -> T,
     ) {
         let mut out = Vec::new();
-        run(cases, &mut out, shape, family, lanes, &scalar, undecided);
+        run(cases, &mut out, shape, lanes, &scalar, undecided);
         assert_eq!(out.len(), cases.len());
         for (c, got) in cases.iter().zip(&out) {
             assert_eq!(got, &scalar(c), "{c:?}");

@@ -356,8 +356,9 @@ fn fast<M: ProductMode>(line: Linear<f64>, plane: &Plane<f64>) -> Option<LinePla
 /// A case of the batch entry point.
 pub type LinePlaneCase<'a> = (Linear<'a, f64>, &'a Plane<f64>);
 
-/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) in lanes: writes
-/// the answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) or of mixed shapes
+/// in lanes: writes the answers of the decided lanes to `out` (see
+/// [`batch::LaneKernel`]).
 #[allow(clippy::manual_map)] // `match`, not a closure: see below
 #[inline(always)]
 fn fast_lanes<M: ProductMode, F: Wide>(
@@ -410,17 +411,10 @@ fn batch_shape((l, p): &LinePlaneCase) -> usize {
         + usize::from(matches!(p, Plane::Implicit { .. }))
 }
 
-/// The batch family: one lane group may hold cases of every shape (lines and
-/// segments: [`crate::geom::raw::MixedLines`]; planes of both kinds:
-/// [`PlaneData::General`]).
-fn batch_family(_shape: usize) -> usize {
-    0
-}
-
 /// Certified line ∩ plane for many cases: appends to `out`, in order, exactly the
 /// answer [`intersect_line_plane`] gives for each case (see `geom::batch`: lane groups
-/// of one shape through the lane filter). `out` only allocates when it
-/// grows.
+/// through the lane filter, one shape each, then what is left of the shapes mixed).
+/// `out` only allocates when it grows.
 pub fn intersect_line_plane_batch(
     cases: &[LinePlaneCase],
     out: &mut Vec<Certified<LinePlane<Rounded>>>,
@@ -430,7 +424,6 @@ pub fn intersect_line_plane_batch(
         cases,
         out,
         batch_shape,
-        batch_family,
         lanes,
         |&(l, p)| intersect_line_plane(l, p),
         |&(l, p)| exact_tiers(l, p),
@@ -465,7 +458,6 @@ mod tests {
         batch::testing::assert_run_equals_scalar(
             &cases,
             batch_shape,
-            batch_family,
             lanes,
             |&(l, p)| intersect_line_plane(l, p),
             |&(l, p)| exact_tiers(l, p),

@@ -615,8 +615,9 @@ impl ParamLanes {
 /// A case of the batch entry point.
 pub type PlanePlaneCase<'a> = (&'a Plane<f64>, &'a Plane<f64>);
 
-/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) in lanes: writes
-/// the answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) or of mixed shapes
+/// in lanes: writes the answers of the decided lanes to `out` (see
+/// [`batch::LaneKernel`]).
 #[inline(always)]
 fn fast_lanes<M: ProductMode, F: Wide>(
     cases: &[PlanePlaneCase],
@@ -674,16 +675,10 @@ fn batch_shape((a, b): &PlanePlaneCase) -> usize {
     implicit(a) | implicit(b) << 1
 }
 
-/// The batch family: one lane group may hold pairs of every shape (see
-/// [`terms_mixed`]).
-fn batch_family(_shape: usize) -> usize {
-    0
-}
-
 /// Certified plane ∩ plane for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_planes`] gives for each pair (see `geom::batch`: lane groups of
-/// pairs of one shape through the lane filter). `out` only allocates when it
-/// grows.
+/// answer [`intersect_planes`] gives for each pair (see `geom::batch`: lane groups
+/// through the lane filter, one shape each, then what is left of the shapes mixed).
+/// `out` only allocates when it grows.
 pub fn intersect_planes_batch(
     cases: &[PlanePlaneCase],
     out: &mut Vec<Certified<PlanePlane<Rounded>>>,
@@ -693,7 +688,6 @@ pub fn intersect_planes_batch(
         cases,
         out,
         batch_shape,
-        batch_family,
         lanes,
         |&(a, b)| intersect_planes(a, b),
         |&(a, b)| exact_tiers(a, b),
@@ -751,7 +745,6 @@ mod tests {
         batch::testing::assert_run_equals_scalar(
             &cases,
             batch_shape,
-            batch_family,
             lanes,
             |&(a, b)| intersect_planes(a, b),
             |&(a, b)| exact_tiers(a, b),

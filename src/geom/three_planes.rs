@@ -421,8 +421,9 @@ fn fast<M: ProductMode>(p: &[Plane<f64>; 3]) -> Option<ThreePlanes<Rounded>> {
     })
 }
 
-/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) in lanes: writes
-/// the answers of the decided lanes to `out` (see [`batch::LaneKernel`]).
+/// The filter tier for `F::N` cases of one shape ([`batch_shape`]) or of mixed shapes
+/// in lanes: writes the answers of the decided lanes to `out` (see
+/// [`batch::LaneKernel`]).
 #[allow(clippy::manual_map)] // `match`, not a closure: see below
 #[inline(always)]
 fn fast_lanes<M: ProductMode, F: Wide>(
@@ -479,16 +480,10 @@ fn batch_shape(p: &[Plane<f64>; 3]) -> usize {
     implicit(&p[0]) | implicit(&p[1]) << 1 | implicit(&p[2]) << 2
 }
 
-/// The batch family: one lane group may hold triples of every shape (see
-/// [`terms_mixed`]).
-fn batch_family(_shape: usize) -> usize {
-    0
-}
-
 /// Certified three planes for many cases: appends to `out`, in order, exactly the
 /// answer [`intersect_three_planes`] gives for each triple (see `geom::batch`: lane
-/// groups of triples of one shape through the lane filter). `out` only allocates
-/// when it grows.
+/// groups through the lane filter, one shape each, then what is left of the shapes
+/// mixed). `out` only allocates when it grows.
 pub fn intersect_three_planes_batch(
     cases: &[[Plane<f64>; 3]],
     out: &mut Vec<Certified<ThreePlanes<Rounded>>>,
@@ -498,7 +493,6 @@ pub fn intersect_three_planes_batch(
         cases,
         out,
         batch_shape,
-        batch_family,
         lanes,
         intersect_three_planes,
         exact_tiers,
@@ -544,7 +538,6 @@ mod tests {
         batch::testing::assert_run_equals_scalar(
             &cases,
             batch_shape,
-            batch_family,
             lanes,
             intersect_three_planes,
             exact_tiers,
