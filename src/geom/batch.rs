@@ -181,6 +181,20 @@ macro_rules! lane_kernel {
 }
 pub(crate) use lane_kernel;
 
+/// For the tests: the kernels [`lane_kernel!`] builds with at most 4 and at most 8
+/// lanes, where the CPU can run them (so the four-lane AVX kernels are exercised on
+/// AVX-512 machines too; without AVX-512 both are four lanes wide).
+#[cfg(test)]
+macro_rules! test_lane_kernels {
+    ($fast:ident, $case:ty, $answer:ty) => {
+        [4, 8]
+            .into_iter()
+            .filter_map(|max| $crate::geom::batch::lane_kernel!($fast, $case, $answer, max))
+    };
+}
+#[cfg(test)]
+pub(crate) use test_lane_kernels;
+
 /// Test drivers shared by the operations' lane-kernel tests.
 #[cfg(test)]
 pub(crate) mod testing {
@@ -209,27 +223,20 @@ pub(crate) mod testing {
         (bits, out)
     }
 
-    /// A deterministic value in `[−1, 1)` for test data (SplitMix64 of `k`, scaled).
-    pub(crate) fn pseudo(k: u64) -> f64 {
-        let mut z = k.wrapping_add(1).wrapping_mul(0x9E37_79B9_7F4A_7C15);
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 / (1u64 << 52) as f64 - 1.0
+    /// A vector of `unit()` coordinates from the `robust` generators' random stream.
+    pub(crate) fn unit_vector(r: &mut crate::robust::rng::Rng) -> nalgebra::Vector3<f64> {
+        nalgebra::Vector3::new(r.unit(), r.unit(), r.unit())
     }
 
     /// A generic plane from the seed `k`: parametric, or implicit when `implicit`.
     pub(crate) fn generic_plane(k: u64, implicit: bool) -> crate::geom::Plane<f64> {
-        let v = |j: u64| {
-            nalgebra::Vector3::new(
-                pseudo(k * 16 + j),
-                pseudo(k * 16 + j + 1),
-                pseudo(k * 16 + j + 2),
-            )
-        };
+        let mut r = crate::robust::rng::Rng::new(k);
+        let a = unit_vector(&mut r);
         if implicit {
-            crate::geom::Plane::implicit(v(0), pseudo(k * 16 + 9)).unwrap()
+            crate::geom::Plane::implicit(a, r.unit()).unwrap()
         } else {
-            crate::geom::Plane::parametric(v(3), v(6), v(10)).unwrap()
+            let (u, v) = (unit_vector(&mut r), unit_vector(&mut r));
+            crate::geom::Plane::parametric(a, u, v).unwrap()
         }
     }
 

@@ -435,6 +435,7 @@ mod tests {
     use super::*;
     use crate::geom::Line;
     use crate::num::error_bound::ErrorBound;
+    use crate::num::lane::MAX_LANES;
 
     /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
     /// `batch::run` equal the scalar ones on every generator.
@@ -469,35 +470,27 @@ mod tests {
     /// origin) is left undecided, without disturbing the others.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        // Every lane width the CPU has: the four-lane (AVX) kernel also on AVX-512 machines.
-        for max in [4, 8] {
-            let Some(kernel) = lane_kernel!(
-                fast_lanes,
-                LinePlaneCase,
-                Certified<LinePlane<Rounded>>,
-                max
-            ) else {
-                continue; // no AVX/FMA
-            };
-            let plane = Plane::parametric(
-                [0.3, -1.7, 2.9].into(),
-                [1.1, 0.2, -0.7].into(),
-                [-0.4, 1.3, 0.6].into(),
-            )
-            .unwrap();
+        let plane = Plane::parametric(
+            [0.3, -1.7, 2.9].into(),
+            [1.1, 0.2, -0.7].into(),
+            [-0.4, 1.3, 0.6].into(),
+        )
+        .unwrap();
+        let lines: Vec<Line<f64>> = (0..MAX_LANES)
+            .map(|i| {
+                let o = if i % 4 == 2 {
+                    1e200
+                } else {
+                    0.1 * i as f64 + 0.37
+                };
+                Line::new([o, -2.3, 0.71].into(), [0.9, 0.33 + i as f64, -1.21].into()).unwrap()
+            })
+            .collect();
+        let cases: Vec<LinePlaneCase> = lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
+        for kernel in
+            batch::test_lane_kernels!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>)
+        {
             let w = kernel.width;
-            let lines: Vec<Line<f64>> = (0..w)
-                .map(|i| {
-                    let o = if i % 4 == 2 {
-                        1e200
-                    } else {
-                        0.1 * i as f64 + 0.37
-                    };
-                    Line::new([o, -2.3, 0.71].into(), [0.9, 0.33 + i as f64, -1.21].into()).unwrap()
-                })
-                .collect();
-            let cases: Vec<LinePlaneCase> =
-                lines.iter().map(|l| (Linear::Line(l), &plane)).collect();
             let (bits, out) =
                 batch::testing::run_once(&kernel, &cases, filter_certified(LinePlane::Parallel));
             for i in 0..w {
@@ -547,13 +540,11 @@ mod tests {
 
     /// A generic line and segment from the seed `k`.
     fn segment_and_line(k: u64) -> (Line<f64>, crate::geom::Segment<f64>) {
-        let v = |j: u64| {
-            let r = batch::testing::pseudo;
-            nalgebra::Vector3::new(r(1000 * k + j), r(1000 * k + j + 1), r(1000 * k + j + 2))
-        };
+        let mut r = crate::robust::rng::Rng::new(k);
+        let mut v = || batch::testing::unit_vector(&mut r);
         (
-            Line::new(v(0), v(3)).unwrap(),
-            crate::geom::Segment::new(v(6), v(9)).unwrap(),
+            Line::new(v(), v()).unwrap(),
+            crate::geom::Segment::new(v(), v()).unwrap(),
         )
     }
 
@@ -562,34 +553,27 @@ mod tests {
     /// parametric planes; the point outside a segment's domain where it is).
     #[test]
     fn lane_kernel_decides_mixed_lanes() {
-        for max in [4, 8] {
-            let Some(kernel) = lane_kernel!(
-                fast_lanes,
-                LinePlaneCase,
-                Certified<LinePlane<Rounded>>,
-                max
-            ) else {
-                continue; // no AVX/FMA
-            };
-            let w = kernel.width as u64;
-            let objs: Vec<_> = (0..w)
-                .map(|i| {
-                    let p = batch::testing::generic_plane(1000 * i + 20, i & 1 == 1);
-                    (segment_and_line(i), p)
-                })
-                .collect();
-            let cases: Vec<LinePlaneCase> = objs
-                .iter()
-                .enumerate()
-                .map(|(i, ((l, s), p))| {
-                    let l = if i & 2 == 2 {
-                        Linear::Segment(s)
-                    } else {
-                        Linear::Line(l)
-                    };
-                    (l, p)
-                })
-                .collect();
+        let objs: Vec<_> = (0..MAX_LANES as u64)
+            .map(|i| {
+                let p = batch::testing::generic_plane(1000 * i + 20, i & 1 == 1);
+                (segment_and_line(i), p)
+            })
+            .collect();
+        let cases: Vec<LinePlaneCase> = objs
+            .iter()
+            .enumerate()
+            .map(|(i, ((l, s), p))| {
+                let l = if i & 2 == 2 {
+                    Linear::Segment(s)
+                } else {
+                    Linear::Line(l)
+                };
+                (l, p)
+            })
+            .collect();
+        for kernel in
+            batch::test_lane_kernels!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>)
+        {
             batch::testing::assert_kernel_decides_all(
                 &kernel,
                 &cases,

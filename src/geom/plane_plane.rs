@@ -717,6 +717,7 @@ pub(crate) fn bound_planes() -> [PlaneData<crate::num::error_bound::ErrorBound>;
 mod tests {
     use super::*;
     use crate::num::error_bound::ErrorBound;
+    use crate::num::lane::MAX_LANES;
 
     /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
     /// `batch::run` equal the scalar ones on every generator.
@@ -755,28 +756,21 @@ mod tests {
     /// answers; a lane of two parallel planes is left to the scalar path.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        // Every lane width the CPU has: the four-lane (AVX) kernel also on AVX-512 machines.
-        for max in [4, 8] {
-            let Some(kernel) = lane_kernel!(
-                fast_lanes,
-                PlanePlaneCase,
-                Certified<PlanePlane<Rounded>>,
-                max
-            ) else {
-                continue; // no AVX/FMA
-            };
+        let planes: Vec<Plane<f64>> = (0..2 * MAX_LANES)
+            .map(|i| {
+                let s = 0.41 + 1.37 * i as f64;
+                // the pair of lane 1 (mod 4) is parallel: planes 2 and 3 (mod 8) share a normal
+                let n = if i % 8 == 3 { s - 1.37 } else { s };
+                Plane::implicit(Vector3::new(1.7 / n, n, 0.3 - n * 1.37), s).unwrap()
+            })
+            .collect();
+        let cases: Vec<PlanePlaneCase> = (0..MAX_LANES)
+            .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
+            .collect();
+        for kernel in
+            batch::test_lane_kernels!(fast_lanes, PlanePlaneCase, Certified<PlanePlane<Rounded>>)
+        {
             let w = kernel.width;
-            let planes: Vec<Plane<f64>> = (0..2 * w)
-                .map(|i| {
-                    let s = 0.41 + 1.37 * i as f64;
-                    // the pair of lane 1 (mod 4) is parallel: planes 2 and 3 (mod 8) share a normal
-                    let n = if i % 8 == 3 { s - 1.37 } else { s };
-                    Plane::implicit(Vector3::new(1.7 / n, n, 0.3 - n * 1.37), s).unwrap()
-                })
-                .collect();
-            let cases: Vec<PlanePlaneCase> = (0..w)
-                .map(|i| (&planes[2 * i], &planes[2 * i + 1]))
-                .collect();
             let (bits, out) =
                 batch::testing::run_once(&kernel, &cases, filter_certified(PlanePlane::Parallel));
             for i in 0..w {
@@ -835,20 +829,14 @@ mod tests {
     /// the parametric planes of each lane).
     #[test]
     fn lane_kernel_decides_mixed_lanes() {
-        for max in [4, 8] {
-            let Some(kernel) = lane_kernel!(
-                fast_lanes,
-                PlanePlaneCase,
-                Certified<PlanePlane<Rounded>>,
-                max
-            ) else {
-                continue; // no AVX/FMA
-            };
-            let plane = batch::testing::generic_plane;
-            let planes: Vec<(Plane<f64>, Plane<f64>)> = (0..kernel.width as u64)
-                .map(|i| (plane(2 * i, i & 1 == 1), plane(2 * i + 1, i & 2 == 2)))
-                .collect();
-            let cases: Vec<PlanePlaneCase> = planes.iter().map(|(a, b)| (a, b)).collect();
+        let plane = batch::testing::generic_plane;
+        let planes: Vec<(Plane<f64>, Plane<f64>)> = (0..MAX_LANES as u64)
+            .map(|i| (plane(2 * i, i & 1 == 1), plane(2 * i + 1, i & 2 == 2)))
+            .collect();
+        let cases: Vec<PlanePlaneCase> = planes.iter().map(|(a, b)| (a, b)).collect();
+        for kernel in
+            batch::test_lane_kernels!(fast_lanes, PlanePlaneCase, Certified<PlanePlane<Rounded>>)
+        {
             batch::testing::assert_kernel_decides_all(
                 &kernel,
                 &cases,

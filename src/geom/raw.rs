@@ -143,6 +143,12 @@ impl<F: Wide> RawLine<F> {
     }
 }
 
+/// The scales of a line (see [`RawLine::scales`]).
+#[inline(always)]
+fn line_scales<F: Lane>(o: &V3<F>, d: &V3<F>) -> (F, F) {
+    (scale_of(o), scale_of(d))
+}
+
 /// The scales of a segment (see [`RawLine::scales`]).
 #[inline(always)]
 fn segment_scales<F: Lane>(a: &V3<F>, b: &V3<F>) -> (F, F) {
@@ -154,7 +160,7 @@ impl<F: Lane> MixedLines<F> {
     /// Each lane's scales of its kind (see [`RawLine::scales`]).
     #[inline(always)]
     pub(crate) fn scales(&self) -> (F, F) {
-        let (lp, ll) = (scale_of(&self.o), scale_of(&self.d));
+        let (lp, ll) = line_scales(&self.o, &self.d);
         let (sp, sl) = segment_scales(&self.o, &self.b);
         (
             F::select(self.segment, sp, lp),
@@ -181,7 +187,7 @@ impl<F: Lane> RawLine<F> {
     #[inline(always)]
     pub(crate) fn scales(&self) -> (F, F) {
         match self {
-            RawLine::Line { o, d } => (scale_of(o), scale_of(d)),
+            RawLine::Line { o, d } => line_scales(o, d),
             RawLine::Segment { a, b } => segment_scales(a, b),
             RawLine::Mixed(m, _) => m.scales(),
         }

@@ -591,15 +591,9 @@ mod tests {
     /// (parameters only on the parametric planes of each lane).
     #[test]
     fn lane_kernel_decides_mixed_lanes() {
-        for max in [4, 8] {
-            let Some(kernel) = lane_kernel!(
-                fast_lanes,
-                [Plane<f64>; 3],
-                Certified<ThreePlanes<Rounded>>,
-                max
-            ) else {
-                continue; // no AVX/FMA
-            };
+        for kernel in
+            batch::test_lane_kernels!(fast_lanes, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>)
+        {
             let cases: Vec<[Plane<f64>; 3]> = (0..8)
                 .map(|k| {
                     let p =
@@ -627,16 +621,9 @@ mod tests {
     /// scalar path.
     #[test]
     fn lane_kernel_decides_generic_lanes() {
-        // Every lane width the CPU has: the four-lane (AVX) kernel also on AVX-512 machines.
-        for max in [4, 8] {
-            let Some(kernel) = lane_kernel!(
-                fast_lanes,
-                [Plane<f64>; 3],
-                Certified<ThreePlanes<Rounded>>,
-                max
-            ) else {
-                continue; // no AVX/FMA
-            };
+        for kernel in
+            batch::test_lane_kernels!(fast_lanes, [Plane<f64>; 3], Certified<ThreePlanes<Rounded>>)
+        {
             let w = kernel.width;
             let cases: Vec<[Plane<f64>; 3]> = (0..w)
                 .map(|i| {
