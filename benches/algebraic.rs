@@ -6,7 +6,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use geocert::certify::univariate::{real_roots, Polynomial};
-use geocert::ops::algebraic::{intersect_conics, intersect_line_torus, Conic, TorusData};
+use geocert::ops::algebraic::{intersect_conic_conic, intersect_line_torus, Conic, TorusData};
 use nalgebra::Matrix4;
 use rug::Rational;
 
@@ -97,7 +97,7 @@ fn line_torus_f64(o: &[f64; 3], d: &[f64; 3]) -> Vec<[f64; 3]> {
 fn bench_line_torus(c: &mut Criterion) {
     let torus = TorusData::new([0.0; 3], [0.0, 0.0, 1.0], 2.0, 1.0).unwrap();
     for (name, lines) in [("generic", generic_lines()), ("tangent", tangent_lines())] {
-        let mut g = c.benchmark_group(format!("line_torus/{name}"));
+        let mut g = c.benchmark_group(format!("intersect_line_torus_exact/{name}"));
         g.bench_function("f64_companion", |b| {
             b.iter(|| {
                 for (o, d) in &lines {
@@ -137,10 +137,10 @@ fn bench_conics(c: &mut Criterion) {
     let ellipse = Conic::conic([1.0 / 9.0, 0.0, 1.0, 0.0, 0.0, -1.0]).unwrap();
     let mut g = c.benchmark_group("conics");
     g.bench_function("four_points_16_6", |b| {
-        b.iter(|| black_box(intersect_conics(&circle2, &ellipse).ok()))
+        b.iter(|| black_box(intersect_conic_conic(&circle2, &ellipse).ok()))
     });
     g.bench_function("two_tangencies_16_6", |b| {
-        b.iter(|| black_box(intersect_conics(&circle1, &ellipse).ok()))
+        b.iter(|| black_box(intersect_conic_conic(&circle1, &ellipse).ok()))
     });
     g.finish();
 }

@@ -15,8 +15,8 @@ use geocert::geom::line_plane::{
     intersect_line_plane_f64, LinePlaneCase,
 };
 use geocert::geom::plane_plane::{
-    intersect_planes, intersect_planes_batch, intersect_planes_exact, intersect_planes_f64,
-    PlanePlaneCase,
+    intersect_plane_plane, intersect_plane_plane_batch, intersect_plane_plane_exact,
+    intersect_plane_plane_f64, PlanePlaneCase,
 };
 use geocert::geom::three_planes::{
     intersect_three_planes, intersect_three_planes_batch, intersect_three_planes_exact,
@@ -55,7 +55,7 @@ fn tier(c: &Case) -> geocert::Arithmetic {
             intersect_line_plane(l.linear(), &p).arithmetic
         }
         Case::PlanePlane(a, b) => {
-            intersect_planes(&a.object(same).unwrap(), &b.object(same).unwrap()).arithmetic
+            intersect_plane_plane(&a.object(same).unwrap(), &b.object(same).unwrap()).arithmetic
         }
         _ => unreachable!(),
     }
@@ -290,7 +290,7 @@ fn plane_plane(data: &[Case]) -> Methods<'_> {
                 let f = f.clone();
                 move || {
                     for [a, b] in f.iter() {
-                        black_box(intersect_planes_f64(a, b));
+                        black_box(intersect_plane_plane_f64(a, b));
                     }
                 }
             }),
@@ -301,7 +301,7 @@ fn plane_plane(data: &[Case]) -> Methods<'_> {
                 let f = f.clone();
                 move || {
                     for [a, b] in f.iter() {
-                        black_box(intersect_planes(a, b));
+                        black_box(intersect_plane_plane(a, b));
                     }
                 }
             }),
@@ -315,7 +315,7 @@ fn plane_plane(data: &[Case]) -> Methods<'_> {
                 move || {
                     let mut out = out.borrow_mut();
                     out.clear();
-                    intersect_planes_batch(black_box(&cases), &mut out);
+                    intersect_plane_plane_batch(black_box(&cases), &mut out);
                     black_box(&*out);
                 }
             }),
@@ -324,7 +324,7 @@ fn plane_plane(data: &[Case]) -> Methods<'_> {
             "exact",
             Box::new(move || {
                 for [a, b] in &e {
-                    black_box(intersect_planes_exact(a, b));
+                    black_box(intersect_plane_plane_exact(a, b));
                 }
             }),
         ),

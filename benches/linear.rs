@@ -8,8 +8,8 @@ use geocert::geom::line_plane::{
     intersect_line_plane_f64, LinePlaneCase,
 };
 use geocert::geom::plane_plane::{
-    intersect_planes, intersect_planes_batch, intersect_planes_exact, intersect_planes_f64,
-    PlanePlaneCase,
+    intersect_plane_plane, intersect_plane_plane_batch, intersect_plane_plane_exact,
+    intersect_plane_plane_f64, PlanePlaneCase,
 };
 use geocert::geom::three_planes::{
     intersect_three_planes, intersect_three_planes_batch, intersect_three_planes_exact,
@@ -263,21 +263,21 @@ fn bench(c: &mut Criterion) {
         let pq: Vec<(Plane<Rational>, Plane<Rational>)> =
             pp.iter().map(|(a, b)| (q(a), q(b))).collect();
         for (x, y) in &pp {
-            assert_eq!(intersect_planes(x, y).arithmetic, tier(degenerate));
+            assert_eq!(intersect_plane_plane(x, y).arithmetic, tier(degenerate));
         }
         let mut g = c.benchmark_group(format!("plane_plane/{kind}"));
         g.throughput(Throughput::Elements(BATCH as u64));
         g.bench_function(BenchmarkId::from_parameter("f64"), |b| {
             b.iter(|| {
                 for (x, y) in &pp {
-                    black_box(intersect_planes_f64(black_box(x), y));
+                    black_box(intersect_plane_plane_f64(black_box(x), y));
                 }
             })
         });
         g.bench_function(BenchmarkId::from_parameter("certified"), |b| {
             b.iter(|| {
                 for (x, y) in &pp {
-                    black_box(intersect_planes(black_box(x), y));
+                    black_box(intersect_plane_plane(black_box(x), y));
                 }
             })
         });
@@ -286,14 +286,14 @@ fn bench(c: &mut Criterion) {
         g.bench_function(BenchmarkId::from_parameter("certified_batch"), |b| {
             b.iter(|| {
                 out.clear();
-                intersect_planes_batch(black_box(&cases), &mut out);
+                intersect_plane_plane_batch(black_box(&cases), &mut out);
                 black_box(&out);
             })
         });
         g.bench_function(BenchmarkId::from_parameter("exact"), |b| {
             b.iter(|| {
                 for (x, y) in &pq {
-                    black_box(intersect_planes_exact(black_box(x), y));
+                    black_box(intersect_plane_plane_exact(black_box(x), y));
                 }
             })
         });

@@ -22,7 +22,7 @@ use geocert::ops::intersect::curve_surface::{
     intersect_curve_surface, intersect_curve_surface_f64, CurveSurfaceSystem,
 };
 use geocert::ops::project::surface::{
-    project_point_on_surface, project_point_on_surface_f64, SurfaceFeet, SurfaceFootSystem,
+    project_point_surface, project_point_surface_f64, SurfaceFeet, SurfaceFootSystem,
 };
 use geocert::surface::nurbs::NurbsSurface;
 use geocert::surface::torus::Torus;
@@ -102,7 +102,7 @@ fn projections<S: Surface>(c: &mut Criterion, name: &str, s: &S, p: [f64; 3], fe
     let precision = Precision::default();
     let opts = Options::default();
     let answers = |s: &S| -> Vec<Vec<f64>> {
-        match project_point_on_surface_f64(s, &p, &nodes, &precision, false) {
+        match project_point_surface_f64(s, &p, &nodes, &precision, false) {
             SurfaceFeet::Finite(f) => f.iter().map(|x| x.params.to_vec()).collect(),
             SurfaceFeet::Infinite => Vec::new(),
         }
@@ -115,7 +115,7 @@ fn projections<S: Surface>(c: &mut Criterion, name: &str, s: &S, p: [f64; 3], fe
         point: p,
     };
     assert_eq!(certify_each(&sys, &answers(s), &opts), feet);
-    let full = project_point_on_surface(s, &p, &nodes, &precision, &opts).expect("certifies");
+    let full = project_point_surface(s, &p, &nodes, &precision, &opts).expect("certifies");
     assert!(
         full.complete && full.value.len() == feet,
         "{name}: {full:?}"
@@ -127,7 +127,7 @@ fn projections<S: Surface>(c: &mut Criterion, name: &str, s: &S, p: [f64; 3], fe
         b.iter(|| certify_each(&sys, &answers(black_box(s)), &opts))
     });
     g.bench_function("certified_complete", |b| {
-        b.iter(|| project_point_on_surface(black_box(s), &p, &nodes, &precision, &opts))
+        b.iter(|| project_point_surface(black_box(s), &p, &nodes, &precision, &opts))
     });
     g.finish();
 }

@@ -90,21 +90,21 @@ fn segments_2d(c: &mut Criterion) {
     g.bench_function("epick", |b| {
         b.iter(|| {
             for [s, t] in &data {
-                black_box(epick::intersect_segments_2d(s, t).ok());
+                black_box(epick::intersect_segment2_segment2(s, t).ok());
             }
         })
     });
     g.bench_function("epeck_to_double", |b| {
         b.iter(|| {
             for [s, t] in &data {
-                black_box(epeck_f64::intersect_segments_2d(EpeckToDouble::Approx, s, t).ok());
+                black_box(epeck_f64::intersect_segment2_segment2(EpeckToDouble::Approx, s, t).ok());
             }
         })
     });
     g.bench_function("epeck_exact_rational", |b| {
         b.iter(|| {
             for [s, t] in &data {
-                black_box(epeck::intersect_segments_2d(s, t).ok());
+                black_box(epeck::intersect_segment2_segment2(s, t).ok());
             }
         })
     });

@@ -4,13 +4,13 @@
 
 use geocert::num::round::{next_down, next_up};
 use geocert::ops::classify::Side;
-use geocert::ops::closed_surface::{classify_point_closed_surface, ClosedSurface};
+use geocert::ops::closed_surface::{classify_point_surface, ClosedSurface};
 use geocert::Status;
 use proptest::prelude::*;
 use rug::Float;
 
 fn side(p: [f64; 3], s: &ClosedSurface) -> Side {
-    let c = classify_point_closed_surface(&p, s);
+    let c = classify_point_surface(&p, s);
     assert_eq!(c.status, Status::Exact);
     assert!(c.complete);
     c.value

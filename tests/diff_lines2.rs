@@ -7,7 +7,9 @@
 mod diff_support;
 
 use diff_support::*;
-use geocert::geom::lines2::{intersect_linear2, intersect_linear2_exact, Empty2, Intersection2};
+use geocert::geom::lines2::{
+    intersect_line2_line2, intersect_line2_line2_exact, Empty2, Intersection2,
+};
 use geocert::num::Interval;
 use geocert::oracle::{epeck, Intersection};
 use geocert::robust::case::{line2, q, same, segment2, Linear2In};
@@ -76,8 +78,8 @@ fn check(c: &Case) -> Result<(), String> {
     };
     let (af, ae) = (a.object(same).expect("valid"), a.object(q).expect("valid"));
     let (bf, be) = (b.object(same).expect("valid"), b.object(q).expect("valid"));
-    let exact = intersect_linear2_exact(ae.linear(), be.linear());
-    let cert = intersect_linear2(af.linear(), bf.linear());
+    let exact = intersect_line2_line2_exact(ae.linear(), be.linear());
+    let cert = intersect_line2_line2(af.linear(), bf.linear());
     certified_exact(&cert)?;
     let truth = match (a, b) {
         (
@@ -89,9 +91,9 @@ fn check(c: &Case) -> Result<(), String> {
                 origin: o2,
                 dir: d2,
             },
-        ) => epeck::intersect_lines_2d(&line2(*o1, *d1), &line2(*o2, *d2)),
+        ) => epeck::intersect_line2_line2(&line2(*o1, *d1), &line2(*o2, *d2)),
         (Linear2In::Segment { a: a1, b: b1 }, Linear2In::Segment { a: a2, b: b2 }) => {
-            epeck::intersect_segments_2d(&segment2(*a1, *b1), &segment2(*a2, *b2))
+            epeck::intersect_segment2_segment2(&segment2(*a1, *b1), &segment2(*a2, *b2))
         }
         _ => return Err("mixed line and segment".into()),
     }
@@ -204,13 +206,13 @@ fn epeck_misses_a_crossing_when_its_interval_quotient_is_unbounded() {
     let crossing = vec![Rational::from(2), Rational::from((-13, 8))];
     assert!(on_line2(&crossing, &a) && on_line2(&crossing, &b));
     assert!(cgal_interval_exit(&a, &b));
-    let epeck = epeck::intersect_lines_2d(
+    let epeck = epeck::intersect_line2_line2(
         &line2([2.0, -1.625], [-7.875, -5e-324]),
         &line2([10.859375, -1.625], [-31.5, 0.0]),
     );
     assert_eq!(epeck, Ok(Intersection::Empty));
     let (af, bf) = (a.object(same).unwrap(), b.object(same).unwrap());
-    let cert = intersect_linear2(af.linear(), bf.linear());
+    let cert = intersect_line2_line2(af.linear(), bf.linear());
     match cert.value {
         Intersection2::Point { point, .. } => {
             assert_eq!([point[0].nearest, point[1].nearest], [2.0, -1.625]);

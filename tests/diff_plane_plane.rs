@@ -7,7 +7,7 @@
 mod diff_support;
 
 use diff_support::*;
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_exact, PlanePlane};
+use geocert::geom::plane_plane::{intersect_plane_plane, intersect_plane_plane_exact, PlanePlane};
 use geocert::num::round::round_rational_scaled;
 use geocert::oracle::{epeck, Intersection};
 use geocert::robust::case::{q, same};
@@ -19,8 +19,8 @@ fn check(c: &Case) -> Result<(), String> {
     };
     let (af, ae) = (a.object(same).expect("valid"), a.object(q).expect("valid"));
     let (bf, be) = (b.object(same).expect("valid"), b.object(q).expect("valid"));
-    let exact = intersect_planes_exact(&ae, &be);
-    let cert = intersect_planes(&af, &bf);
+    let exact = intersect_plane_plane_exact(&ae, &be);
+    let cert = intersect_plane_plane(&af, &bf);
     certified_exact(&cert)?;
     let truth = epeck::intersect_plane_plane(&a.oracle(), &b.oracle())
         .map_err(|e| format!("Epeck refused: {e}"))?;

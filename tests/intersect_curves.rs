@@ -2,7 +2,7 @@
 //! §16.6 and closed forms.
 
 use geocert::ops::float::Precision;
-use geocert::ops::intersect::intersect_curves_f64;
+use geocert::ops::intersect::intersect_curve_curve_f64;
 use std::f64::consts::{FRAC_PI_2, PI, TAU};
 
 mod ops_support;
@@ -16,7 +16,7 @@ fn wrap(t: f64) -> f64 {
 fn circle_and_ellipse_of_16_6_meet_in_four_transversal_points() {
     let circle = Ellipse2 { a: 2.0, b: 2.0 };
     let ellipse = Ellipse2 { a: 3.0, b: 1.0 };
-    let pts = intersect_curves_f64(
+    let pts = intersect_curve_curve_f64(
         &circle,
         &ellipse,
         &samples(&circle, 20),
@@ -49,7 +49,7 @@ fn circle_and_ellipse_of_16_6_meet_in_four_transversal_points() {
 fn circle_inside_ellipse_of_16_6_touches_at_two_tangent_points() {
     let circle = Ellipse2 { a: 1.0, b: 1.0 };
     let ellipse = Ellipse2 { a: 3.0, b: 1.0 };
-    let pts = intersect_curves_f64(
+    let pts = intersect_curve_curve_f64(
         &circle,
         &ellipse,
         &samples(&circle, 20),
@@ -72,7 +72,7 @@ fn circle_inside_ellipse_of_16_6_touches_at_two_tangent_points() {
 fn disjoint_ellipses_have_no_points() {
     let small = Ellipse2 { a: 1.0, b: 0.5 };
     let big = Ellipse2 { a: 3.0, b: 1.0 };
-    let pts = intersect_curves_f64(
+    let pts = intersect_curve_curve_f64(
         &small,
         &big,
         &samples(&small, 20),
@@ -94,7 +94,7 @@ fn crossing_space_lines_meet_once_and_skew_ones_never() {
         dir: [0.0, 1.0, 0.0],
         range: [-5.0, 5.0],
     };
-    let pts = intersect_curves_f64(
+    let pts = intersect_curve_curve_f64(
         &a,
         &b,
         &samples(&a, 1),
@@ -109,7 +109,7 @@ fn crossing_space_lines_meet_once_and_skew_ones_never() {
         dir: [0.0, 1.0, 0.0],
         range: [-5.0, 5.0],
     };
-    let none = intersect_curves_f64(
+    let none = intersect_curve_curve_f64(
         &a,
         &skew,
         &samples(&a, 1),
@@ -121,11 +121,11 @@ fn crossing_space_lines_meet_once_and_skew_ones_never() {
 
 #[test]
 fn certified_circle_ellipse_points_of_16_6() {
-    use geocert::ops::intersect::intersect_curves_2d;
+    use geocert::ops::intersect::intersect_curve2_curve2;
     use geocert::Status;
     let circle = Ellipse2 { a: 2.0, b: 2.0 };
     let ellipse = Ellipse2 { a: 3.0, b: 1.0 };
-    let r = intersect_curves_2d(
+    let r = intersect_curve2_curve2(
         &circle,
         &ellipse,
         &samples(&circle, 20),
@@ -160,7 +160,7 @@ fn certified_circle_ellipse_points_of_16_6() {
     }
     // Tangent circle r = 1: two touching points, each verified_singular around (0, ±1).
     let small = Ellipse2 { a: 1.0, b: 1.0 };
-    let r = intersect_curves_2d(
+    let r = intersect_curve2_curve2(
         &small,
         &ellipse,
         &samples(&small, 20),

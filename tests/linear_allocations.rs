@@ -14,8 +14,8 @@ use std::sync::{Once, OnceLock};
 use gmp_mpfr_sys::gmp;
 
 use geocert::geom::line_plane::{intersect_line_plane, intersect_line_plane_batch};
-use geocert::geom::lines2::intersect_linear2;
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_batch};
+use geocert::geom::lines2::intersect_line2_line2;
+use geocert::geom::plane_plane::{intersect_plane_plane, intersect_plane_plane_batch};
 use geocert::geom::three_planes::{intersect_three_planes, intersect_three_planes_batch};
 use geocert::geom::{Line, Line2, Linear, Linear2, Plane};
 use geocert::Arithmetic;
@@ -150,7 +150,7 @@ fn filter_and_integer_tiers_allocate_nothing() {
         v(1.01, -0.517, 0.331),
     );
     assert_allocation_free("plane-plane, generic", Arithmetic::Filter, || {
-        intersect_planes(&a2, &b2)
+        intersect_plane_plane(&a2, &b2)
     });
     let line = Line::new(v(0.3, -1.7, 2.9), v(0.7, 0.9, -1.3)).unwrap();
     assert_allocation_free("line-plane, generic", Arithmetic::Filter, || {
@@ -159,7 +159,7 @@ fn filter_and_integer_tiers_allocate_nothing() {
     let l1 = Line2::new(Vector2::new(0.1, 0.7), Vector2::new(1.3, -0.3)).unwrap();
     let l2 = Line2::new(Vector2::new(-0.4, 0.2), Vector2::new(0.6, 0.9)).unwrap();
     assert_allocation_free("2D lines, generic", Arithmetic::Filter, || {
-        intersect_linear2(Linear2::Line(&l1), Linear2::Line(&l2))
+        intersect_line2_line2(Linear2::Line(&l1), Linear2::Line(&l2))
     });
 
     // The batch entry points with room reserved in `out`: four-lane filter, nothing else.
@@ -172,7 +172,7 @@ fn filter_and_integer_tiers_allocate_nothing() {
     let (n, ()) = allocations(|| {
         intersect_three_planes_batch(&triples, &mut out3);
         intersect_line_plane_batch(&lines, &mut out_lp);
-        intersect_planes_batch(&pairs, &mut out_pp);
+        intersect_plane_plane_batch(&pairs, &mut out_pp);
     });
     assert_eq!(n, 0, "batches: {n} allocations");
     assert!(out3.iter().all(|c| c.arithmetic == Arithmetic::Filter));
@@ -190,11 +190,11 @@ fn filter_and_integer_tiers_allocate_nothing() {
     });
     let shifted = plane(v(3.0, 0.0, 2.0), v(1.0, 0.0, 0.0), v(2.0, 0.0, 1.0));
     assert_allocation_free("plane-plane, coincident", Arithmetic::Integer, || {
-        intersect_planes(&p1, &shifted)
+        intersect_plane_plane(&p1, &shifted)
     });
     let parallel = plane(v(0.0, 1.0, 0.0), v(1.0, 0.0, 0.0), v(0.0, 0.0, 3.0));
     assert_allocation_free("plane-plane, parallel", Arithmetic::Integer, || {
-        intersect_planes(&p1, &parallel)
+        intersect_plane_plane(&p1, &parallel)
     });
     let inside = Line::new(v(2.0, 0.0, 7.0), v(1.0, 0.0, -2.0)).unwrap();
     assert_allocation_free("line-plane, contained", Arithmetic::Integer, || {
@@ -203,7 +203,7 @@ fn filter_and_integer_tiers_allocate_nothing() {
     let m1 = Line2::new(Vector2::new(0.0, 1.0), Vector2::new(2.0, 4.0)).unwrap();
     let m2 = Line2::new(Vector2::new(1.0, 3.0), Vector2::new(-1.0, -2.0)).unwrap();
     assert_allocation_free("2D lines, coincident", Arithmetic::Integer, || {
-        intersect_linear2(Linear2::Line(&m1), Linear2::Line(&m2))
+        intersect_line2_line2(Linear2::Line(&m1), Linear2::Line(&m2))
     });
 
     // Three planes through a line given by full 53-bit doubles: the 768-bit integers.

@@ -8,7 +8,9 @@
 use geocert::geom::line_plane::{
     intersect_line_plane, intersect_line_plane_batch, LinePlane, LinePlaneCase,
 };
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_batch, PlanePlaneCase};
+use geocert::geom::plane_plane::{
+    intersect_plane_plane, intersect_plane_plane_batch, PlanePlaneCase,
+};
 use geocert::geom::three_planes::{intersect_three_planes, intersect_three_planes_batch};
 use geocert::geom::{Line, Linear, Plane};
 use geocert::robust::case::{same, LinearIn, LinearObj};
@@ -98,11 +100,11 @@ fn plane_plane_batch_equals_scalar() {
         .collect();
     let batch: Vec<PlanePlaneCase> = pairs.iter().map(|(a, b)| (a, b)).collect();
     let mut out = Vec::new();
-    intersect_planes_batch(&batch, &mut out);
+    intersect_plane_plane_batch(&batch, &mut out);
     assert_eq!(out.len(), batch.len());
     let mut filter = 0;
     for (i, (&(a, b), got)) in batch.iter().zip(&out).enumerate() {
-        let want = intersect_planes(a, b);
+        let want = intersect_plane_plane(a, b);
         assert_eq!(got, &want, "case {i}: {a:?} {b:?}");
         filter += usize::from(want.arithmetic == Arithmetic::Filter);
     }
@@ -150,8 +152,8 @@ fn small_batches_pool_shapes() {
         })
         .collect();
     let pp: Vec<PlanePlaneCase> = pairs.iter().map(|(a, b)| (a, b)).collect();
-    chunks_equal_scalar(&pp, intersect_planes_batch, |&(a, b)| {
-        intersect_planes(a, b)
+    chunks_equal_scalar(&pp, intersect_plane_plane_batch, |&(a, b)| {
+        intersect_plane_plane(a, b)
     });
     let objs: Vec<(LinearObj<f64>, Plane<f64>)> = cases(Construction::LinePlane, 300)
         .iter()

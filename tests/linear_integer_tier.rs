@@ -7,7 +7,7 @@
 
 use geocert::geom::line_plane::{intersect_line_plane, intersect_line_plane_exact, LinePlane};
 use geocert::geom::plane_plane::{
-    intersect_planes, intersect_planes_exact, ParamLine, PlaneLine, PlanePlane,
+    intersect_plane_plane, intersect_plane_plane_exact, ParamLine, PlaneLine, PlanePlane,
 };
 use geocert::geom::three_planes::{
     intersect_three_planes, intersect_three_planes_exact, ThreePlanes,
@@ -87,8 +87,8 @@ fn run(construction: Construction, generator: Generator, n: u64) -> BTreeMap<&'s
             Case::PlanePlane(a, b) => {
                 let (af, bf) = (a.object(same).unwrap(), b.object(same).unwrap());
                 let (ae, be) = (a.object(q).unwrap(), b.object(q).unwrap());
-                let cert = intersect_planes(&af, &bf);
-                let truth = match intersect_planes_exact(&ae, &be) {
+                let cert = intersect_plane_plane(&af, &bf);
+                let truth = match intersect_plane_plane_exact(&ae, &be) {
                     PlanePlane::Line(l) => {
                         let k = match &cert.value {
                             PlanePlane::Line(c) => c.dir_exponent,

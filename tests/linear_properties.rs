@@ -7,7 +7,7 @@
 //! * the certified f64 path agrees with the `_exact` path on the same inputs.
 
 use geocert::geom::line_plane::{intersect_line_plane, intersect_line_plane_exact, LinePlane};
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_exact, PlanePlane};
+use geocert::geom::plane_plane::{intersect_plane_plane, intersect_plane_plane_exact, PlanePlane};
 use geocert::geom::three_planes::{
     intersect_three_planes, intersect_three_planes_exact, ThreePlanes,
 };
@@ -357,7 +357,7 @@ fn check_pair(a: &P, b: &P) -> Result<(), TestCaseError> {
     let (Some(fa), Some(fb)) = (a.f64(), b.f64()) else {
         return Ok(());
     };
-    let exact = intersect_planes_exact(&a.exact(), &b.exact());
+    let exact = intersect_plane_plane_exact(&a.exact(), &b.exact());
     let (ea, eb) = (a.eq(), b.eq());
     let ra = rank(vec![ea.0.to_vec(), eb.0.to_vec()]);
     let rb = rank(vec![
@@ -387,7 +387,7 @@ fn check_pair(a: &P, b: &P) -> Result<(), TestCaseError> {
         PlanePlane::Coincident => prop_assert!(ra == 1 && rb == 1),
         PlanePlane::Parallel => prop_assert!(ra == 1 && rb == 2),
     }
-    let cert = intersect_planes(&fa, &fb);
+    let cert = intersect_plane_plane(&fa, &fb);
     match (&cert.value, &exact) {
         (PlanePlane::Line(r), PlanePlane::Line(l)) => {
             let k = r.dir_exponent;
@@ -483,7 +483,7 @@ fn check_segment_plane(a: &V, b: &V, pl: &P) -> Result<(), TestCaseError> {
 mod two_d {
     use super::*;
     use geocert::geom::lines2::{
-        intersect_linear2, intersect_linear2_exact, Empty2, Intersection2,
+        intersect_line2_line2, intersect_line2_line2_exact, Empty2, Intersection2,
     };
     use geocert::geom::{Line2, Linear2, Segment2};
 
@@ -549,7 +549,10 @@ mod two_d {
     pub fn check(a: &L2, b: &L2) -> Result<(), TestCaseError> {
         let run = with(a, &mut |fa, qa| {
             with(b, &mut |fb, qb| {
-                (intersect_linear2(fa, fb), intersect_linear2_exact(qa, qb))
+                (
+                    intersect_line2_line2(fa, fb),
+                    intersect_line2_line2_exact(qa, qb),
+                )
             })
         });
         let Some(Some((cert, exact))) = run else {

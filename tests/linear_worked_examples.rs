@@ -3,8 +3,10 @@
 //! independently (rug::Float at 300 bits, then rounded once to a double).
 
 use geocert::geom::line_plane::{intersect_line_plane, intersect_line_plane_exact, LinePlane};
-use geocert::geom::lines2::{intersect_linear2, intersect_linear2_exact, Empty2, Intersection2};
-use geocert::geom::plane_plane::{intersect_planes, intersect_planes_exact, PlanePlane};
+use geocert::geom::lines2::{
+    intersect_line2_line2, intersect_line2_line2_exact, Empty2, Intersection2,
+};
+use geocert::geom::plane_plane::{intersect_plane_plane, intersect_plane_plane_exact, PlanePlane};
 use geocert::geom::project::{project_point_plane, project_point_plane_exact};
 use geocert::geom::three_planes::{
     intersect_three_planes, intersect_three_planes_exact, ThreePlanes,
@@ -84,7 +86,7 @@ fn s16_2_projection_onto_a_skew_plane() {
 fn s16_5_segments_and_extensions() {
     let seg = |a: [f64; 2], b: [f64; 2]| Segment2::new(a.into(), b.into()).unwrap();
     let (s1, s2) = (seg([0.0, 0.0], [4.0, 4.0]), seg([0.0, 4.0], [4.0, 0.0]));
-    let c = intersect_linear2(Linear2::Segment(&s1), Linear2::Segment(&s2));
+    let c = intersect_line2_line2(Linear2::Segment(&s1), Linear2::Segment(&s2));
     assert_eq!(c.status, Status::Exact);
     assert_eq!(
         c.value,
@@ -95,7 +97,7 @@ fn s16_5_segments_and_extensions() {
         }
     );
     let s3 = seg([0.0, 0.0], [1.0, 1.0]);
-    let c = intersect_linear2(Linear2::Segment(&s3), Linear2::Segment(&s2));
+    let c = intersect_line2_line2(Linear2::Segment(&s3), Linear2::Segment(&s2));
     assert_eq!(
         c.value,
         Intersection2::Empty(Empty2::OutsideDomain {
@@ -111,7 +113,7 @@ fn s16_5_segments_and_extensions() {
         )
         .unwrap()
     };
-    let e = intersect_linear2_exact(
+    let e = intersect_line2_line2_exact(
         Linear2::Segment(&qs([0, 0], [1, 1])),
         Linear2::Segment(&qs([0, 4], [4, 0])),
     );
@@ -162,7 +164,7 @@ fn s16_7_three_planes() {
 fn s16_8_plane_plane() {
     let r = plane([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
     let s = plane([2.0, 0.0, 0.0], [0.0, 1.0, 0.0], [-1.0, 0.0, 1.0]);
-    let c = intersect_planes(&r, &s);
+    let c = intersect_plane_plane(&r, &s);
     assert_eq!(c.status, Status::Exact);
     let PlanePlane::Line(l) = c.value else {
         panic!("expected a line")
@@ -189,11 +191,11 @@ fn s16_8_plane_plane() {
     );
     // s₀ = r₀ = 0 (plane x + z = 0): (8.2) is 0/0, (8.3) gives p = 0.
     let s0 = plane([0.0; 3], [0.0, 1.0, 0.0], [-1.0, 0.0, 1.0]);
-    let PlanePlane::Line(l) = intersect_planes(&r, &s0).value else {
+    let PlanePlane::Line(l) = intersect_plane_plane(&r, &s0).value else {
         panic!()
     };
     assert_eq!(l.point, Vector3::new(exact(0.0), exact(0.0), exact(0.0)));
-    let e = intersect_planes_exact(
+    let e = intersect_plane_plane_exact(
         &qplane([0, 0, 0], [1, 0, 0], [0, 1, 0]),
         &qplane([2, 0, 0], [0, 1, 0], [-1, 0, 1]),
     );

@@ -7,8 +7,8 @@
 use geocert::certificate::{Arithmetic, Status};
 use geocert::num::MpfrInterval;
 use geocert::ops::algebraic::{
-    intersect_conics, intersect_line_conic, intersect_line_quadric, intersect_line_torus, Conic,
-    ConicCut, LineCut, QuadricForm, TorusData,
+    intersect_conic_conic, intersect_line_conic, intersect_line_quadric, intersect_line_torus,
+    Conic, ConicCut, LineCut, QuadricForm, TorusData,
 };
 use proptest::prelude::*;
 use rug::Rational;
@@ -453,7 +453,8 @@ fn ellipse(a: f64, b: f64) -> Conic {
 #[test]
 fn circle_and_ellipse_16_6() {
     // Four transversal points (±√(27/8), ±√(5/8)).
-    let r = intersect_conics(&Conic::circle([0.0, 0.0], 2.0).unwrap(), &ellipse(3.0, 1.0)).unwrap();
+    let r = intersect_conic_conic(&Conic::circle([0.0, 0.0], 2.0).unwrap(), &ellipse(3.0, 1.0))
+        .unwrap();
     assert_eq!((r.status, r.complete), (Status::Exact, true));
     let (x, y) = ((27.0f64 / 8.0).sqrt(), (5.0f64 / 8.0).sqrt());
     assert_eq!(
@@ -461,7 +462,8 @@ fn circle_and_ellipse_16_6() {
         vec![([-x, -y], 1), ([-x, y], 1), ([x, -y], 1), ([x, y], 1)]
     );
     // r = 1: two tangencies (0, ±1) sharing the abscissa 0.
-    let r = intersect_conics(&Conic::circle([0.0, 0.0], 1.0).unwrap(), &ellipse(3.0, 1.0)).unwrap();
+    let r = intersect_conic_conic(&Conic::circle([0.0, 0.0], 1.0).unwrap(), &ellipse(3.0, 1.0))
+        .unwrap();
     assert_eq!(
         conic_points(&r.value),
         vec![([0.0, -1.0], 2), ([0.0, 1.0], 2)]
@@ -473,7 +475,7 @@ fn circle_and_ellipse_16_6() {
         let e = Conic::ellipse([0.0, 0.0], identity2(), 3.0 * s, s)
             .unwrap()
             .unwrap();
-        let r = intersect_conics(&c, &e).unwrap();
+        let r = intersect_conic_conic(&c, &e).unwrap();
         assert_eq!(conic_points(&r.value)[3], ([x * s, y * s], 1));
     }
 }
@@ -483,7 +485,7 @@ fn conic_tangencies_and_contact_orders() {
     // (x − 1)² + y² = 4 and x²/9 + y²/4 = 1: tangent at (3, 0), crossing at
     // (3/5, ±4√6/5).
     let c = Conic::circle([1.0, 0.0], 2.0).unwrap();
-    let r = intersect_conics(&c, &ellipse(3.0, 2.0)).unwrap();
+    let r = intersect_conic_conic(&c, &ellipse(3.0, 2.0)).unwrap();
     let y = nearest_of(&mp(96.0).sqrt().div(&mp(5.0)));
     assert_eq!(
         conic_points(&r.value),
@@ -493,17 +495,17 @@ fn conic_tangencies_and_contact_orders() {
     // x² + (y − 1)² = 1 against y = x²/2: one point of contact order 4.
     let circle = Conic::circle([0.0, 1.0], 1.0).unwrap();
     let parabola = Conic::conic([0.5, 0.0, 0.0, 0.0, -1.0, 0.0]).unwrap();
-    let r = intersect_conics(&circle, &parabola).unwrap();
+    let r = intersect_conic_conic(&circle, &parabola).unwrap();
     assert_eq!(conic_points(&r.value), vec![([0.0, 0.0], 4)]);
     // Two unit circles touching externally at (1, 0); two far apart miss.
     let a = Conic::circle([0.0, 0.0], 1.0).unwrap();
     let b = Conic::circle([2.0, 0.0], 1.0).unwrap();
     assert_eq!(
-        conic_points(&intersect_conics(&a, &b).unwrap().value),
+        conic_points(&intersect_conic_conic(&a, &b).unwrap().value),
         vec![([1.0, 0.0], 2)]
     );
     let far = Conic::circle([5.0, 0.0], 1.0).unwrap();
-    assert!(intersect_conics(&a, &far)
+    assert!(intersect_conic_conic(&a, &far)
         .unwrap()
         .value
         .points()
@@ -515,7 +517,7 @@ fn hyperbola_and_circle_meet_in_four_irrational_points() {
     // xy = 1, x² + y² = 4: x² = 2 ± √3, y = 1/x.
     let h = Conic::conic([0.0, 1.0, 0.0, 0.0, 0.0, -1.0]).unwrap();
     let c = Conic::circle([0.0, 0.0], 2.0).unwrap();
-    let r = intersect_conics(&h, &c).unwrap();
+    let r = intersect_conic_conic(&h, &c).unwrap();
     let s3 = mp(3.0).sqrt();
     let big = mp(2.0).add(&s3).sqrt();
     let small = mp(2.0).sub(&s3).sqrt();
@@ -542,13 +544,13 @@ fn coincident_and_common_components() {
         std::array::from_fn(|i| 2.0 * k[i].to_f64())
     })
     .unwrap();
-    let r = intersect_conics(&c, &twice).unwrap();
+    let r = intersect_conic_conic(&c, &twice).unwrap();
     assert!(matches!(r.value, ConicCut::Coincident));
     assert_eq!((r.status, r.complete), (Status::Exact, true));
     // xy and x(x + y − 1) share the line x = 0.
     let a = Conic::conic([0.0, 1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
     let b = Conic::conic([1.0, 1.0, 0.0, -1.0, 0.0, 0.0]).unwrap();
-    let r = intersect_conics(&a, &b).unwrap();
+    let r = intersect_conic_conic(&a, &b).unwrap();
     assert!(matches!(r.value, ConicCut::CommonComponent));
     assert!(!r.complete);
     // Degenerate conics: the point conic x² + y² = 0 meets the line y = x twice at the
@@ -556,24 +558,24 @@ fn coincident_and_common_components() {
     let point = Conic::conic([1.0, 0.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
     let diagonal = Conic::conic([0.0, 0.0, 0.0, 1.0, -1.0, 0.0]).unwrap();
     assert_eq!(
-        conic_points(&intersect_conics(&point, &diagonal).unwrap().value),
+        conic_points(&intersect_conic_conic(&point, &diagonal).unwrap().value),
         vec![([0.0, 0.0], 2)]
     );
     let xx = Conic::conic([1.0, 0.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
     let yy = Conic::conic([0.0, 0.0, 1.0, 0.0, 0.0, 0.0]).unwrap();
     assert_eq!(
-        conic_points(&intersect_conics(&xx, &yy).unwrap().value),
+        conic_points(&intersect_conic_conic(&xx, &yy).unwrap().value),
         vec![([0.0, 0.0], 4)]
     );
     // Two line pairs through the origin meet only there, four times; a circle through
     // the node of x² − y² meets it twice there and once at (±1, 1).
     let pair = Conic::conic([1.0, 0.0, -1.0, 0.0, 0.0, 0.0]).unwrap();
     let cross = Conic::conic([0.0, 1.0, 0.0, 0.0, 0.0, 0.0]).unwrap();
-    let r = intersect_conics(&pair, &cross).unwrap();
+    let r = intersect_conic_conic(&pair, &cross).unwrap();
     assert_eq!((r.status, r.complete), (Status::Exact, true));
     assert_eq!(conic_points(&r.value), vec![([0.0, 0.0], 4)]);
     let circle = Conic::circle([0.0, 1.0], 1.0).unwrap();
-    let r = intersect_conics(&pair, &circle).unwrap();
+    let r = intersect_conic_conic(&pair, &circle).unwrap();
     assert_eq!((r.status, r.complete), (Status::Exact, true));
     assert_eq!(
         conic_points(&r.value),
@@ -582,7 +584,7 @@ fn coincident_and_common_components() {
     // The empty conic x² + y² + 1 = 0 meets nothing.
     let empty = Conic::conic([1.0, 0.0, 1.0, 0.0, 0.0, 1.0]).unwrap();
     assert!(
-        intersect_conics(&empty, &Conic::circle([0.0, 0.0], 1.0).unwrap())
+        intersect_conic_conic(&empty, &Conic::circle([0.0, 0.0], 1.0).unwrap())
             .unwrap()
             .value
             .points()
@@ -593,7 +595,7 @@ fn coincident_and_common_components() {
     let unit = Conic::circle([0.0, 0.0], 1.0).unwrap();
     let h = 0.5f64.sqrt();
     assert_eq!(
-        conic_points(&intersect_conics(&line, &unit).unwrap().value),
+        conic_points(&intersect_conic_conic(&line, &unit).unwrap().value),
         vec![([-h, -h], 1), ([h, h], 1)]
     );
 }
@@ -753,7 +755,7 @@ proptest! {
         prop_assume!(l1 * m2 != l2 * m1);
         let a = line_pair(lines(p1, p2), lines(p3, p4));
         let b = line_pair(lines(p1, p3), lines(p2, p4));
-        let r = intersect_conics(&pencil_member(a, b, l1, m1, k), &pencil_member(a, b, l2, m2, k)).unwrap();
+        let r = intersect_conic_conic(&pencil_member(a, b, l1, m1, k), &pencil_member(a, b, l2, m2, k)).unwrap();
         prop_assert_eq!((r.status, r.complete), (Status::Exact, true));
         let mut want: Vec<([f64; 2], u32)> = pts.iter().map(|&p| (scaled(p, k), 1)).collect();
         want.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap());
@@ -823,7 +825,7 @@ proptest! {
     fn random_integer_conics(a in prop::array::uniform6(-3i64..=3), b in prop::array::uniform6(-3i64..=3)) {
         prop_assume!(a.iter().any(|&x| x != 0) && b.iter().any(|&x| x != 0));
         let conic = |c: [i64; 6]| Conic::conic(c.map(|x| x as f64)).unwrap();
-        let r = intersect_conics(&conic(a), &conic(b)).unwrap();
+        let r = intersect_conic_conic(&conic(a), &conic(b)).unwrap();
         prop_assert_eq!(r.status, Status::Exact);
         if let ConicCut::Points(points) = &r.value {
             prop_assert!(r.complete);
@@ -861,7 +863,7 @@ proptest! {
         prop_assume!(l2 != 0 && l1 * m2 != l2 * m1);
         let a = line_pair(ell, line_through(p3, p4));
         let b = line_pair(line_through(p1, p3), line_through(p1, p4));
-        let r = intersect_conics(&pencil_member(a, b, l1, m1, k), &pencil_member(a, b, l2, m2, k)).unwrap();
+        let r = intersect_conic_conic(&pencil_member(a, b, l1, m1, k), &pencil_member(a, b, l2, m2, k)).unwrap();
         let mut want = vec![(scaled(p1, k), 2), (scaled(p3, k), 1), (scaled(p4, k), 1)];
         want.sort_by(|x, y| x.0.partial_cmp(&y.0).unwrap());
         prop_assert_eq!(conic_points(&r.value), want);

@@ -160,7 +160,7 @@ fn two_dimensional_lines_meet_exactly_on_both() {
             point: [rng.unit(), rng.unit()],
             direction: [rng.unit(), rng.unit()],
         });
-        let Intersection::Point(x) = epeck::intersect_lines_2d(&a, &b).unwrap() else {
+        let Intersection::Point(x) = epeck::intersect_line2_line2(&a, &b).unwrap() else {
             panic!("random lines meet in a point")
         };
         assert!(on(&x, &a) && on(&x, &b));

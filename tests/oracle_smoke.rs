@@ -239,11 +239,11 @@ fn two_dimensional_segments() {
     let diagonal = seg([0.0, 0.0], [4.0, 4.0]);
     let q2 = |x: i64, y: i64| [Rational::from(x), Rational::from(y)];
     assert_eq!(
-        epeck::intersect_segments_2d(&diagonal, &seg([0.0, 4.0], [4.0, 0.0])).unwrap(),
+        epeck::intersect_segment2_segment2(&diagonal, &seg([0.0, 4.0], [4.0, 0.0])).unwrap(),
         Intersection::Point(q2(2, 2))
     );
     // Collinear, overlapping on (2,2)–(4,4), in either orientation.
-    match epeck::intersect_segments_2d(&diagonal, &seg([6.0, 6.0], [2.0, 2.0])).unwrap() {
+    match epeck::intersect_segment2_segment2(&diagonal, &seg([6.0, 6.0], [2.0, 2.0])).unwrap() {
         Intersection::Segment { source, target } => {
             let ends = [q2(2, 2), q2(4, 4)];
             assert!(
@@ -255,20 +255,20 @@ fn two_dimensional_segments() {
     }
     // Touching at an end point.
     assert_eq!(
-        epeck::intersect_segments_2d(&diagonal, &seg([4.0, 4.0], [8.0, 0.0])).unwrap(),
+        epeck::intersect_segment2_segment2(&diagonal, &seg([4.0, 4.0], [8.0, 0.0])).unwrap(),
         Intersection::Point(q2(4, 4))
     );
     // Collinear, touching end to end.
     assert_eq!(
-        epeck::intersect_segments_2d(&diagonal, &seg([4.0, 4.0], [5.0, 5.0])).unwrap(),
+        epeck::intersect_segment2_segment2(&diagonal, &seg([4.0, 4.0], [5.0, 5.0])).unwrap(),
         Intersection::Point(q2(4, 4))
     );
     // Only the extensions meet.
     assert_eq!(
-        epeck::intersect_segments_2d(&diagonal, &seg([5.0, 0.0], [9.0, -4.0])).unwrap(),
+        epeck::intersect_segment2_segment2(&diagonal, &seg([5.0, 0.0], [9.0, -4.0])).unwrap(),
         Intersection::Empty
     );
-    match epick::intersect_segments_2d(&diagonal, &seg([0.0, 4.0], [4.0, 0.0])).unwrap() {
+    match epick::intersect_segment2_segment2(&diagonal, &seg([0.0, 4.0], [4.0, 0.0])).unwrap() {
         Intersection::Point(p) => assert!(close(&p, &[2.0, 2.0], 1e-15)),
         other => panic!("Epick: {other:?}"),
     }
@@ -283,15 +283,15 @@ fn two_dimensional_lines() {
     // t(1,2) = (3,0) + s(−1,1) at t = 1.
     let (a, b) = (line([0.0, 0.0], [1.0, 2.0]), line([3.0, 0.0], [-1.0, 1.0]));
     assert_eq!(
-        epeck::intersect_lines_2d(&a, &b).unwrap(),
+        epeck::intersect_line2_line2(&a, &b).unwrap(),
         Intersection::Point([Rational::from(1), Rational::from(2)])
     );
     assert_eq!(
-        epeck::intersect_lines_2d(&a, &line([1.0, 0.0], [-2.0, -4.0])).unwrap(),
+        epeck::intersect_line2_line2(&a, &line([1.0, 0.0], [-2.0, -4.0])).unwrap(),
         Intersection::Empty
     );
     let Intersection::Line { point, direction } =
-        epeck::intersect_lines_2d(&a, &line([2.0, 4.0], [-0.5, -1.0])).unwrap()
+        epeck::intersect_line2_line2(&a, &line([2.0, 4.0], [-0.5, -1.0])).unwrap()
     else {
         panic!("equal lines give a line")
     };
@@ -373,7 +373,7 @@ fn bad_input_comes_back_as_typed_errors() {
         target: [1.0, 1.0],
     };
     assert!(matches!(
-        epeck::intersect_segments_2d(&dot_segment, &dot_segment),
+        epeck::intersect_segment2_segment2(&dot_segment, &dot_segment),
         Err(OracleError::Input(GeomError::InvalidValue { field, .. })) if field == "a"
     ));
     let nan = parametric([0.0, f64::NAN, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
@@ -409,6 +409,6 @@ fn epick_refuses_magnitudes_it_would_abort_on() {
         point: [1e-300, 0.0],
         direction: [1.0, 1.0],
     };
-    assert!(epick::intersect_lines_2d(&tiny, &tiny).is_err());
+    assert!(epick::intersect_line2_line2(&tiny, &tiny).is_err());
     assert!(epeck::intersect_segment_plane(&seg, &plane).is_ok());
 }

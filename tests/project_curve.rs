@@ -2,7 +2,7 @@
 //! example §16.3 and closed-form facts.
 
 use geocert::ops::float::Precision;
-use geocert::ops::project::{project_point_on_curve_f64, CurveFeet};
+use geocert::ops::project::{project_point_curve_f64, CurveFeet};
 
 mod ops_support;
 use ops_support::{samples, Ellipse2};
@@ -10,7 +10,7 @@ use ops_support::{samples, Ellipse2};
 #[test]
 fn all_four_feet_on_the_ellipse_of_16_3() {
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let CurveFeet::Finite(feet) = project_point_on_curve_f64(
+    let CurveFeet::Finite(feet) = project_point_curve_f64(
         &e,
         &[0.5, 0.2],
         &samples(&e, 20),
@@ -36,7 +36,7 @@ fn all_four_feet_on_the_ellipse_of_16_3() {
 #[test]
 fn nearest_foot_of_16_3() {
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let CurveFeet::Finite(feet) = project_point_on_curve_f64(
+    let CurveFeet::Finite(feet) = project_point_curve_f64(
         &e,
         &[0.5, 0.2],
         &samples(&e, 20),
@@ -53,7 +53,7 @@ fn nearest_foot_of_16_3() {
 #[test]
 fn the_centre_of_a_circle_has_infinitely_many_feet() {
     let c = Ellipse2 { a: 2.0, b: 2.0 };
-    let r = project_point_on_curve_f64(
+    let r = project_point_curve_f64(
         &c,
         &[0.0, 0.0],
         &samples(&c, 20),
@@ -68,7 +68,7 @@ fn a_point_on_the_major_axis_outside_has_the_two_vertices_as_feet() {
     // p = (5, 0) on the x axis beyond the vertex: feet at t = 0 (distance 2) and
     // t = π (distance 8); the evolute's cusp is at x = (a² − b²)/a = 5/3 < 5, so no other.
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let CurveFeet::Finite(feet) = project_point_on_curve_f64(
+    let CurveFeet::Finite(feet) = project_point_curve_f64(
         &e,
         &[5.0, 0.0],
         &samples(&e, 20),
@@ -115,10 +115,10 @@ fn ellipse_root(a: f64, b: f64) -> rug::Float {
 
 #[test]
 fn certified_feet_of_16_3_contain_the_true_roots_and_are_complete() {
-    use geocert::ops::project::project_point_on_curve;
+    use geocert::ops::project::project_point_curve;
     use geocert::Status;
     let e = Ellipse2 { a: 3.0, b: 2.0 };
-    let r = project_point_on_curve(
+    let r = project_point_curve(
         &e,
         &[0.5, 0.2],
         &samples(&e, 20),

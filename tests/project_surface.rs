@@ -2,7 +2,7 @@
 //! The surfaces are test-local so this test depends only on the Surface trait.
 
 use geocert::ops::float::Precision;
-use geocert::ops::project::{project_point_on_surface_f64, SurfaceFeet};
+use geocert::ops::project::{project_point_surface_f64, SurfaceFeet};
 use std::f64::consts::{FRAC_PI_2, TAU};
 
 mod ops_support;
@@ -25,7 +25,7 @@ fn a_torus_has_four_feet_from_a_generic_point() {
         v_range: [0.0, TAU],
     };
     let p = [1.0, 2.0, 3.0];
-    let feet = finite(project_point_on_surface_f64(
+    let feet = finite(project_point_surface_f64(
         &torus,
         &p,
         &nodes(&torus, 20),
@@ -43,7 +43,7 @@ fn a_torus_has_four_feet_from_a_generic_point() {
         assert!((x - y).abs() < 1e-12, "{d:?} vs {expected:?}");
     }
     let phi = 2f64.atan2(1.0);
-    let nearest = finite(project_point_on_surface_f64(
+    let nearest = finite(project_point_surface_f64(
         &torus,
         &p,
         &nodes(&torus, 20),
@@ -63,7 +63,7 @@ fn a_sphere_has_two_feet_and_its_centre_infinitely_many() {
         v_range: [-FRAC_PI_2, FRAC_PI_2],
     };
     let p = [1.0, 2.0, 2.0]; // |p| = 3: feet at distance 1 and 5
-    let feet = finite(project_point_on_surface_f64(
+    let feet = finite(project_point_surface_f64(
         &sphere,
         &p,
         &nodes(&sphere, 16),
@@ -74,7 +74,7 @@ fn a_sphere_has_two_feet_and_its_centre_infinitely_many() {
     d.sort_by(f64::total_cmp);
     assert_eq!(d.len(), 2, "{feet:?}");
     assert!((d[0] - 1.0).abs() < 1e-13 && (d[1] - 5.0).abs() < 1e-13);
-    let centre = project_point_on_surface_f64(
+    let centre = project_point_surface_f64(
         &sphere,
         &[0.0; 3],
         &nodes(&sphere, 16),
@@ -93,7 +93,7 @@ fn a_point_on_the_axis_projects_to_the_pole_once() {
         minor: 2.0,
         v_range: [-FRAC_PI_2, FRAC_PI_2],
     };
-    let feet = finite(project_point_on_surface_f64(
+    let feet = finite(project_point_surface_f64(
         &sphere,
         &[0.0, 0.0, 5.0],
         &nodes(&sphere, 16),
@@ -112,7 +112,7 @@ fn a_point_on_the_axis_projects_to_the_pole_once() {
 fn nearest_on_an_open_patch_may_be_a_boundary_point() {
     // Above and beside the unit square: no interior foot; the nearest point is on the
     // edge u = 1 at v = 0.5.
-    let feet = finite(project_point_on_surface_f64(
+    let feet = finite(project_point_surface_f64(
         &Square,
         &[2.0, 0.5, 1.0],
         &nodes(&Square, 8),
@@ -122,7 +122,7 @@ fn nearest_on_an_open_patch_may_be_a_boundary_point() {
     assert_eq!(feet.len(), 1);
     assert_eq!(feet[0].params, [1.0, 0.5]);
     assert!((feet[0].distance - 2f64.sqrt()).abs() < 1e-15);
-    let all = finite(project_point_on_surface_f64(
+    let all = finite(project_point_surface_f64(
         &Square,
         &[2.0, 0.5, 1.0],
         &nodes(&Square, 8),
@@ -134,7 +134,7 @@ fn nearest_on_an_open_patch_may_be_a_boundary_point() {
 
 #[test]
 fn projection_along_a_direction_onto_a_sphere() {
-    use geocert::ops::project::project_along_direction_f64;
+    use geocert::ops::project::project_point_surface_along_f64;
     // From (0.6, 0, 5) straight down onto the sphere of radius 1: hits at z = ±0.8,
     // travel t = 4.2 and 5.8 with the unit direction (0, 0, −1); with dir (0, 0, −2)
     // the travel halves.
@@ -144,7 +144,7 @@ fn projection_along_a_direction_onto_a_sphere() {
         v_range: [-FRAC_PI_2, FRAC_PI_2],
     };
     let n = nodes(&sphere, 16);
-    let pts = project_along_direction_f64(
+    let pts = project_point_surface_along_f64(
         &sphere,
         &[0.6, 0.0, 5.0],
         &[0.0, 0.0, -2.0],
@@ -159,7 +159,7 @@ fn projection_along_a_direction_onto_a_sphere() {
         "{pts:?}"
     );
     assert!((pts[0].point[2] - 0.8).abs() < 1e-12 && (pts[1].point[2] + 0.8).abs() < 1e-12);
-    let nearest = project_along_direction_f64(
+    let nearest = project_point_surface_along_f64(
         &sphere,
         &[0.6, 0.0, 5.0],
         &[0.0, 0.0, 1.0],
@@ -170,7 +170,7 @@ fn projection_along_a_direction_onto_a_sphere() {
     );
     assert_eq!(nearest.len(), 1);
     assert!((nearest[0].t + 4.2).abs() < 1e-12, "{nearest:?}");
-    let miss = project_along_direction_f64(
+    let miss = project_point_surface_along_f64(
         &sphere,
         &[1.5, 0.0, 5.0],
         &[0.0, 0.0, 1.0],
@@ -184,14 +184,14 @@ fn projection_along_a_direction_onto_a_sphere() {
 
 #[test]
 fn certified_torus_feet_contain_the_closed_form_parameters() {
-    use geocert::ops::project::project_point_on_surface;
+    use geocert::ops::project::project_point_surface;
     use geocert::Status;
     let torus = Torus {
         major: 3.0,
         minor: 1.0,
         v_range: [0.0, TAU],
     };
-    let r = project_point_on_surface(
+    let r = project_point_surface(
         &torus,
         &[1.0, 2.0, 3.0],
         &nodes(&torus, 16),

@@ -210,12 +210,12 @@ pub(crate) fn core<R: Field>(a: &Line2Data<R>, b: &Line2Data<R>) -> Intersection
 }
 
 /// Plain f64 (uncertified; `Δ == 0.0` decides parallelism).
-pub fn intersect_linear2_f64(a: Linear2<f64>, b: Linear2<f64>) -> Intersection2<f64> {
+pub fn intersect_line2_line2_f64(a: Linear2<f64>, b: Linear2<f64>) -> Intersection2<f64> {
     core::<f64>(&a.data(), &b.data())
 }
 
 /// Exact, on rational inputs.
-pub fn intersect_linear2_exact(
+pub fn intersect_line2_line2_exact(
     a: Linear2<Rational>,
     b: Linear2<Rational>,
 ) -> Intersection2<Rational> {
@@ -223,7 +223,10 @@ pub fn intersect_linear2_exact(
 }
 
 /// Certified: exact verdict, correctly rounded point and parameters.
-pub fn intersect_linear2(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>> {
+pub fn intersect_line2_line2(
+    a: Linear2<f64>,
+    b: Linear2<f64>,
+) -> Certified<Intersection2<Rounded>> {
     dispatch_fma!(certified(a: Linear2<f64>, b: Linear2<f64>) -> Certified<Intersection2<Rounded>>)
 }
 

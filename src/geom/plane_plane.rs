@@ -340,12 +340,15 @@ pub(crate) fn finish<R: Field>(tm: Terms<R>) -> PlaneLine<R> {
 }
 
 /// Plain f64 (uncertified; `n == 0.0` decides parallelism).
-pub fn intersect_planes_f64(a: &Plane<f64>, b: &Plane<f64>) -> PlanePlane<f64> {
+pub fn intersect_plane_plane_f64(a: &Plane<f64>, b: &Plane<f64>) -> PlanePlane<f64> {
     core::<f64>(&PlaneData::new(a), &PlaneData::new(b))
 }
 
 /// Exact, on rational inputs.
-pub fn intersect_planes_exact(a: &Plane<Rational>, b: &Plane<Rational>) -> PlanePlane<Rational> {
+pub fn intersect_plane_plane_exact(
+    a: &Plane<Rational>,
+    b: &Plane<Rational>,
+) -> PlanePlane<Rational> {
     core::<Rational>(&PlaneData::new(a), &PlaneData::new(b))
 }
 
@@ -400,7 +403,7 @@ fn ring_tier_answer<E: ExactRing>(
 }
 
 /// Certified: exact verdict, correctly rounded point, direction and parameter lines.
-pub fn intersect_planes(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
+pub fn intersect_plane_plane(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>> {
     dispatch_fma!(certified(a: &Plane<f64>, b: &Plane<f64>) -> Certified<PlanePlane<Rounded>>)
 }
 
@@ -676,10 +679,10 @@ fn batch_shape((a, b): &PlanePlaneCase) -> usize {
 }
 
 /// Certified plane ∩ plane for many cases: appends to `out`, in order, exactly the
-/// answer [`intersect_planes`] gives for each pair (see `geom::batch`: lane groups
+/// answer [`intersect_plane_plane`] gives for each pair (see `geom::batch`: lane groups
 /// through the lane filter, one shape each, then what is left of the shapes mixed).
 /// `out` only allocates when it grows.
-pub fn intersect_planes_batch(
+pub fn intersect_plane_plane_batch(
     cases: &[PlanePlaneCase],
     out: &mut Vec<Certified<PlanePlane<Rounded>>>,
 ) {
@@ -689,7 +692,7 @@ pub fn intersect_planes_batch(
         out,
         batch_shape,
         lanes,
-        |&(a, b)| intersect_planes(a, b),
+        |&(a, b)| intersect_plane_plane(a, b),
         |&(a, b)| exact_tiers(a, b),
     );
 }
@@ -747,7 +750,7 @@ mod tests {
             &cases,
             batch_shape,
             lanes,
-            |&(a, b)| intersect_planes(a, b),
+            |&(a, b)| intersect_plane_plane(a, b),
             |&(a, b)| exact_tiers(a, b),
         );
     }
@@ -776,7 +779,7 @@ mod tests {
             for i in 0..w {
                 assert_eq!(bits >> i & 1, u32::from(i % 4 != 1), "lane {i}");
                 if i % 4 != 1 {
-                    assert_eq!(out[i], intersect_planes(cases[i].0, cases[i].1));
+                    assert_eq!(out[i], intersect_plane_plane(cases[i].0, cases[i].1));
                     assert!(matches!(out[i].value, PlanePlane::Line(_)));
                 }
             }
@@ -841,7 +844,7 @@ mod tests {
                 &kernel,
                 &cases,
                 filter_certified(PlanePlane::Parallel),
-                |&(a, b)| intersect_planes(a, b),
+                |&(a, b)| intersect_plane_plane(a, b),
             );
         }
     }

@@ -18,7 +18,7 @@ use crate::error::GeomError;
 use crate::num::Interval;
 use crate::ops::certified::{CertifiedPoint, Options};
 use crate::ops::classify::Side;
-use crate::ops::closed_surface::{classify_point_closed_surface, sphere_feet, ClosedSurface};
+use crate::ops::closed_surface::{classify_point_surface, sphere_feet, ClosedSurface};
 use crate::ops::float::Precision;
 use crate::ops::nearest::{self, Nearest, NearestChoice};
 use crate::ops::{intersect, project};
@@ -336,19 +336,20 @@ fn project_case(
             } else if let Some(r) = sphere_projection(case, spec, &p) {
                 Ok(r)
             } else {
-                let c = project::project_point_on_surface(&s, &p, &nodes, precision, opts)?;
+                let c = project::project_point_surface(&s, &p, &nodes, precision, opts)?;
                 let nearest = case
                     .nearest
-                    .then(|| nearest::nearest_on_surface(&s, &p, &c));
+                    .then(|| nearest::nearest_point_surface(&s, &p, &c));
                 Ok(projection_result(case, c, &[2], p, nearest))
             }
         }
         ObjectSpec::Curve3(spec) => {
             let c3 = at(spec.build(), "onto")?;
             let p = doubles::<3>(point, "point")?;
-            let c =
-                project::project_point_on_curve(&c3, &p, &curve_samples(&c3)?, precision, opts)?;
-            let nearest = case.nearest.then(|| nearest::nearest_on_curve(&c3, &p, &c));
+            let c = project::project_point_curve(&c3, &p, &curve_samples(&c3)?, precision, opts)?;
+            let nearest = case
+                .nearest
+                .then(|| nearest::nearest_point_curve(&c3, &p, &c));
             Ok(projection_result(case, c, &[1], p, nearest))
         }
         ObjectSpec::Curve2(spec) => {
@@ -359,9 +360,10 @@ fn project_case(
                 ));
             };
             let p = doubles::<2>(point, "point")?;
-            let c =
-                project::project_point_on_curve(&c2, &p, &curve_samples(&c2)?, precision, opts)?;
-            let nearest = case.nearest.then(|| nearest::nearest_on_curve(&c2, &p, &c));
+            let c = project::project_point_curve(&c2, &p, &curve_samples(&c2)?, precision, opts)?;
+            let nearest = case
+                .nearest
+                .then(|| nearest::nearest_point_curve(&c2, &p, &c));
             Ok(projection_result(case, c, &[1], p, nearest))
         }
         _ => Err(unsupported("onto", "expected a curved object".into())),
@@ -535,7 +537,7 @@ fn intersect_case(
             else {
                 return Err(unsupported("objects", "intersections with an implicit `conic2` are not implemented for the command line yet".into()));
             };
-            let c = intersect::intersect_curves_2d(
+            let c = intersect::intersect_curve2_curve2(
                 &ca,
                 &cb,
                 &curve_samples(&ca)?,
@@ -576,7 +578,7 @@ fn intersect_case(
                 (Err(e), _) | (_, Err(e)) => return Err(e),
                 _ => return Err(unsupported("objects", "expected two space curves".into())),
             };
-            let c = crate::ops::space_curves::intersect_space_curves(&ca, &cb, opts);
+            let c = crate::ops::space_curves::intersect_curve_curve(&ca, &cb, opts);
             Ok(points_result(case, "points", c, &[1, 1], None))
         }
         [a, b] => {
@@ -695,7 +697,7 @@ fn classify_case(
             ))
         }
     };
-    let c = classify_point_closed_surface(&p, &closed);
+    let c = classify_point_surface(&p, &closed);
     let kind = c.value.as_str();
     let mut r = CaseResult::certified(case.id.clone(), kind, &c);
     // §4: the verdict comes with the nearest point of the shell, when it is proven.
@@ -703,7 +705,7 @@ fn classify_case(
         (Side::On, _) => Ok(exact_point(p)),
         (_, S::Sphere(s)) => nearest_on_sphere(&p, s.center, s.radius),
         _ => {
-            let feet = project::project_point_on_surface(
+            let feet = project::project_point_surface(
                 &surface,
                 &p,
                 &surface_nodes(&surface)?,
@@ -747,13 +749,13 @@ fn nearest_on_sphere(p: &[f64; 3], center: [f64; 3], radius: f64) -> Result<Poin
     })
 }
 
-/// The proven nearest of the certified feet ([`nearest::nearest_on_surface`]).
+/// The proven nearest of the certified feet ([`nearest::nearest_point_surface`]).
 fn nearest_foot<S: Surface>(
     s: &S,
     p: &[f64; 3],
     feet: &Certified<Vec<CertifiedPoint<3>>>,
 ) -> Result<PointOut, String> {
-    let n = nearest::nearest_on_surface(s, p, feet).ok_or("no foot was found")?;
+    let n = nearest::nearest_point_surface(s, p, feet).ok_or("no foot was found")?;
     if n.status == Status::Undecided {
         return Err(n.reason.unwrap_or_default());
     }

@@ -26,7 +26,8 @@ use crate::error::GeomError;
 use crate::num::parse::parse_rational;
 use crate::num::{Interval, Real};
 use crate::ops::algebraic::{
-    intersect_conics, line_quadric, line_torus, ConicCut, LineCut, LineHit, QuadricForm, TorusData,
+    intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact, ConicCut,
+    LineCut, LineHit, QuadricForm, TorusData,
 };
 use crate::surface::frame::Frame;
 use std::cmp::Ordering;
@@ -360,8 +361,8 @@ fn line_and_surface(
     let line = line3(line_spec)?;
     let shape = closed_shape(spec)?;
     let cut = match &shape {
-        ClosedShape::Quadric(q, _, _) => line_quadric(&line.o, &line.d, q),
-        ClosedShape::Torus(t, _, _) => line_torus(&line.o, &line.d, t),
+        ClosedShape::Quadric(q, _, _) => intersect_line_quadric_exact(&line.o, &line.d, q),
+        ClosedShape::Torus(t, _, _) => intersect_line_torus_exact(&line.o, &line.d, t),
     };
     Some(Ok(line_cut_result(
         case,
@@ -433,7 +434,7 @@ fn plane_pair(
         }
     }
     if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
-        let cut = line_quadric(&line.o, &line.d, &conic.form);
+        let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
         return Some(Ok(line_cut_result(
             case,
             &line,
@@ -443,7 +444,7 @@ fn plane_pair(
         )));
     }
     if let (Some(conic), Some(line)) = (plane_conic(a), line2(b)) {
-        let cut = line_quadric(&line.o, &line.d, &conic.form);
+        let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
         return Some(Ok(line_cut_result(
             case,
             &line,
@@ -453,7 +454,7 @@ fn plane_pair(
         )));
     }
     let (ca, cb) = (plane_conic(a)?, plane_conic(b)?);
-    Some(intersect_conics(&ca.form, &cb.form).map(|cut| conics_result(case, &ca, &cb, cut)))
+    Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_result(case, &ca, &cb, cut)))
 }
 
 fn conics_result(

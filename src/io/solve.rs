@@ -361,13 +361,13 @@ impl Kernel for f64 {
         line_plane::intersect_line_plane(l, p).map(|v| v.map(Q::from))
     }
     fn plane_plane(a: &Plane<f64>, b: &Plane<f64>, _: bool) -> Certified<PlanePlane<Q>> {
-        plane_plane::intersect_planes(a, b).map(|v| v.map(Q::from))
+        plane_plane::intersect_plane_plane(a, b).map(|v| v.map(Q::from))
     }
     fn three_planes(p: &[Plane<f64>; 3], _: bool) -> Certified<ThreePlanes<Q>> {
         three_planes::intersect_three_planes(p).map(|v| v.map(Q::from))
     }
     fn lines2(a: Linear2<'_, f64>, b: Linear2<'_, f64>, _: bool) -> Certified<Intersection2<Q>> {
-        lines2::intersect_linear2(a, b).map(|v| v.map(Q::from))
+        lines2::intersect_line2_line2(a, b).map(|v| v.map(Q::from))
     }
     fn project_line(
         p: &Vector3<f64>,
@@ -445,7 +445,7 @@ impl Kernel for Rational {
         keep: bool,
     ) -> Certified<PlanePlane<Q>> {
         let r = ExactRounder::new(keep);
-        let v = match plane_plane::intersect_planes_exact(a, b) {
+        let v = match plane_plane::intersect_plane_plane_exact(a, b) {
             PlanePlane::Line(l) => PlanePlane::Line(r.line(l)),
             PlanePlane::Parallel => PlanePlane::Parallel,
             PlanePlane::Coincident => PlanePlane::Coincident,
@@ -469,7 +469,7 @@ impl Kernel for Rational {
         keep: bool,
     ) -> Certified<Intersection2<Q>> {
         let r = ExactRounder::new(keep);
-        let v = lines2::intersect_linear2_exact(a, b).map(|x| r.q(x));
+        let v = lines2::intersect_line2_line2_exact(a, b).map(|x| r.q(x));
         r.done(v)
     }
     fn project_line(

@@ -121,7 +121,7 @@ pub fn implicit_value_exact(surface: &ClosedSurface, p: &[f64; 3]) -> Rational {
 /// The side of `p` relative to the closed surface, decided exactly (`Status::Exact`,
 /// complete). The surface data must be valid (positive radii, non-zero axis); the case
 /// reader checks that.
-pub fn classify_point_closed_surface(p: &[f64; 3], surface: &ClosedSurface) -> Certified<Side> {
+pub fn classify_point_surface(p: &[f64; 3], surface: &ClosedSurface) -> Certified<Side> {
     let f = implicit_value_exact(surface, p);
     let bits = f
         .numer()

@@ -72,7 +72,7 @@ fn bound_interval(b: f64, rounded: bool) -> Interval {
 
 /// The nearest point of an open or closed curve (module doc): among the certified
 /// `feet` and the ends of the domain.
-pub fn nearest_on_curve<C: Curve<D>, const D: usize>(
+pub fn nearest_point_curve<C: Curve<D>, const D: usize>(
     curve: &C,
     q: &[f64; D],
     feet: &Certified<Vec<CertifiedPoint<D>>>,
@@ -101,7 +101,7 @@ pub fn nearest_on_curve<C: Curve<D>, const D: usize>(
 /// The nearest point of a surface (module doc): among the certified `feet`, against a
 /// proven lower bound of the distance to the edges of its open directions. A nearest
 /// point on an edge is reported undecided (the edges are bounded, not searched).
-pub fn nearest_on_surface<S: Surface>(
+pub fn nearest_point_surface<S: Surface>(
     surface: &S,
     q: &[f64; 3],
     feet: &Certified<Vec<CertifiedPoint<3>>>,

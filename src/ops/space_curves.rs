@@ -42,7 +42,7 @@ fn gap<A: Curve<3>, B: Curve<3>>(a: &A, b: &B, x: &[Interval; 2]) -> [Interval; 
 }
 
 /// All points where two space curves may meet (module doc).
-pub fn intersect_space_curves<A: Curve<3>, B: Curve<3>>(
+pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
     a: &A,
     b: &B,
     opts: &Options,

@@ -79,13 +79,13 @@ pub fn project_point_plane(
 }
 
 /// 2D line ∩ line (OPERATIONS.md §6.1): `Empty`, `Point` or `Line`.
-pub fn intersect_lines_2d(a: &Line2Input, b: &Line2Input) -> Result<ExactResult2, OracleError> {
+pub fn intersect_line2_line2(a: &Line2Input, b: &Line2Input) -> Result<ExactResult2, OracleError> {
     let (a, b) = (convert::line2(a, "a")?, convert::line2(b, "b")?);
     convert::exact(bridge::epeck_lines_2d(&a, &b))
 }
 
 /// 2D segment ∩ segment (OPERATIONS.md §6.2): `Empty`, `Point` or `Segment`.
-pub fn intersect_segments_2d(
+pub fn intersect_segment2_segment2(
     a: &Segment2Input,
     b: &Segment2Input,
 ) -> Result<ExactResult2, OracleError> {

@@ -112,7 +112,7 @@ pub fn project_point_plane(
 }
 
 /// 2D line ∩ line (OPERATIONS.md §6.1): `Empty`, `Point` or `Line`.
-pub fn intersect_lines_2d(
+pub fn intersect_line2_line2(
     to_double: EpeckToDouble,
     a: &Line2Input,
     b: &Line2Input,
@@ -122,7 +122,7 @@ pub fn intersect_lines_2d(
 }
 
 /// 2D segment ∩ segment (OPERATIONS.md §6.2): `Empty`, `Point` or `Segment`.
-pub fn intersect_segments_2d(
+pub fn intersect_segment2_segment2(
     to_double: EpeckToDouble,
     a: &Segment2Input,
     b: &Segment2Input,

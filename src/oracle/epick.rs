@@ -112,7 +112,7 @@ pub fn project_point_plane(point: &[f64; 3], plane: &PlaneInput) -> Result<[f64;
 }
 
 /// 2D line ∩ line (OPERATIONS.md §6.1): `Empty`, `Point` or `Line`.
-pub fn intersect_lines_2d(a: &Line2Input, b: &Line2Input) -> Result<FloatResult2, OracleError> {
+pub fn intersect_line2_line2(a: &Line2Input, b: &Line2Input) -> Result<FloatResult2, OracleError> {
     window(
         &[
             ("a", &[a.point, a.direction].concat()),
@@ -125,7 +125,7 @@ pub fn intersect_lines_2d(a: &Line2Input, b: &Line2Input) -> Result<FloatResult2
 }
 
 /// 2D segment ∩ segment (OPERATIONS.md §6.2): `Empty`, `Point` or `Segment`.
-pub fn intersect_segments_2d(
+pub fn intersect_segment2_segment2(
     a: &Segment2Input,
     b: &Segment2Input,
 ) -> Result<FloatResult2, OracleError> {

@@ -14,7 +14,7 @@
 //! The operations (OPERATIONS.md §3.1, §3.3, §5.1, §6.1, §6.2, §7.1, §8):
 //! `intersect_line_plane`, `intersect_segment_plane`, `intersect_plane_plane`,
 //! `intersect_three_planes`, `project_point_line`, `project_point_plane`,
-//! `intersect_lines_2d`, `intersect_segments_2d`.
+//! `intersect_line2_line2`, `intersect_segment2_segment2`.
 //!
 //! Inputs are doubles, taken exactly by Epeck. A non-finite input is refused in Rust
 //! ([`GeomError::NonFinite`] naming the component, e.g. `plane.origin[1]`). A

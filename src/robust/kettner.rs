@@ -8,7 +8,7 @@ use std::cmp::Ordering;
 
 use super::case::q;
 use crate::certificate::Arithmetic;
-use crate::geom::lines2::{intersect_linear2, Empty2, Intersection2};
+use crate::geom::lines2::{intersect_line2_line2, Empty2, Intersection2};
 use crate::geom::{Line2, Linear2, Segment2};
 
 /// The grid's side.
@@ -52,7 +52,7 @@ pub fn certified(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Option<(Ordering, Ari
     };
     let s = Segment2::new(q.into(), r.into()).ok()?;
     let l = Line2::new(p.into(), e.into()).ok()?;
-    let c = intersect_linear2(Linear2::Segment(&s), Linear2::Line(&l));
+    let c = intersect_line2_line2(Linear2::Segment(&s), Linear2::Line(&l));
     let t2 = match c.value {
         Intersection2::Point { t2, .. } => t2,
         Intersection2::Empty(Empty2::OutsideDomain { t2, .. }) => t2,
@@ -102,7 +102,7 @@ pub fn epick_collinear(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Option<bool> {
         point: q,
         direction: d,
     };
-    match epick::intersect_lines_2d(&a, &b).ok()? {
+    match epick::intersect_line2_line2(&a, &b).ok()? {
         Intersection::Line { .. } => Some(true),
         Intersection::Empty => Some(false),
         _ => None,

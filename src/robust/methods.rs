@@ -11,8 +11,12 @@ use crate::certificate::{Arithmetic, Certified};
 use crate::geom::line_plane::{
     intersect_line_plane, intersect_line_plane_exact, intersect_line_plane_f64,
 };
-use crate::geom::lines2::{intersect_linear2, intersect_linear2_exact, intersect_linear2_f64};
-use crate::geom::plane_plane::{intersect_planes, intersect_planes_exact, intersect_planes_f64};
+use crate::geom::lines2::{
+    intersect_line2_line2, intersect_line2_line2_exact, intersect_line2_line2_f64,
+};
+use crate::geom::plane_plane::{
+    intersect_plane_plane, intersect_plane_plane_exact, intersect_plane_plane_f64,
+};
 use crate::geom::project::{
     project_point_line, project_point_line_exact, project_point_line_f64, project_point_plane,
     project_point_plane_exact, project_point_plane_f64,
@@ -80,9 +84,9 @@ pub fn geocert(case: &Case) -> Option<Answers> {
             let (af, ae) = (a.object(same).ok()?, a.object(q).ok()?);
             let (bf, be) = (b.object(same).ok()?, b.object(q).ok()?);
             (
-                answer::plane_plane(intersect_planes_exact(&ae, &be)),
-                answer::plane_plane(intersect_planes_f64(&af, &bf)),
-                cert(intersect_planes(&af, &bf), answer::plane_plane),
+                answer::plane_plane(intersect_plane_plane_exact(&ae, &be)),
+                answer::plane_plane(intersect_plane_plane_f64(&af, &bf)),
+                cert(intersect_plane_plane(&af, &bf), answer::plane_plane),
             )
         }
         Case::ProjectLine(p, o, d) => {
@@ -112,9 +116,12 @@ pub fn geocert(case: &Case) -> Option<Answers> {
             let (af, ae) = (a.object(same).ok()?, a.object(q).ok()?);
             let (bf, be) = (b.object(same).ok()?, b.object(q).ok()?);
             (
-                answer::linear2(intersect_linear2_exact(ae.linear(), be.linear())),
-                answer::linear2(intersect_linear2_f64(af.linear(), bf.linear())),
-                cert(intersect_linear2(af.linear(), bf.linear()), answer::linear2),
+                answer::linear2(intersect_line2_line2_exact(ae.linear(), be.linear())),
+                answer::linear2(intersect_line2_line2_f64(af.linear(), bf.linear())),
+                cert(
+                    intersect_line2_line2(af.linear(), bf.linear()),
+                    answer::linear2,
+                ),
             )
         }
     };
@@ -257,12 +264,12 @@ fn epick_unguarded(case: &Case) -> Answer<f64> {
                 origin: o2,
                 dir: d2,
             },
-        ) => from(epick::intersect_lines_2d(
+        ) => from(epick::intersect_line2_line2(
             &line2(*o1, *d1),
             &line2(*o2, *d2),
         )),
         Case::Linear2(Linear2In::Segment { a: a1, b: b1 }, Linear2In::Segment { a: a2, b: b2 }) => {
-            from(epick::intersect_segments_2d(
+            from(epick::intersect_segment2_segment2(
                 &segment2(*a1, *b1),
                 &segment2(*a2, *b2),
             ))

@@ -173,7 +173,7 @@ fn find_projection(f1: &Bivariate, f2: &Bivariate, d1: usize, d2: usize) -> Sear
 /// proportional equations. `status: exact`, `complete: true` (except for a common
 /// component). Either input may be degenerate (a line pair, a double line, a point,
 /// an empty conic) or of degree 1.
-pub fn intersect_conics(c1: &Conic, c2: &Conic) -> Result<Certified<ConicCut>, GeomError> {
+pub fn intersect_conic_conic(c1: &Conic, c2: &Conic) -> Result<Certified<ConicCut>, GeomError> {
     let (f1, f2) = (Bivariate::from_conic(c1), Bivariate::from_conic(c2));
     let (Some(d1), Some(d2)) = (f1.total_degree(), f2.total_degree()) else {
         return Err(GeomError::InvalidValue {

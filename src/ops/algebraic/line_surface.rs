@@ -31,12 +31,12 @@ pub fn intersect_line_quadric<const D: usize>(
     quadric: &QuadricForm<D>,
 ) -> Result<Certified<LineCut<D>>, GeomError> {
     let (o, d) = exact_line(&origin, &direction)?;
-    Ok(line_quadric(&o, &d, quadric))
+    Ok(intersect_line_quadric_exact(&o, &d, quadric))
 }
 
 /// [`intersect_line_quadric`] on exact data (`o + t·d`; `d` need not be a double, as
 /// for a segment's `b − a`).
-pub fn line_quadric<const D: usize>(
+pub fn intersect_line_quadric_exact<const D: usize>(
     o: &[Rational; D],
     d: &[Rational; D],
     quadric: &QuadricForm<D>,
@@ -119,18 +119,18 @@ pub fn intersect_line_torus(
     torus: &TorusData,
 ) -> Result<Certified<LineCut<3>>, GeomError> {
     let (o, d) = exact_line(&origin, &direction)?;
-    Ok(line_torus(&o, &d, torus))
+    Ok(intersect_line_torus_exact(&o, &d, torus))
 }
 
 /// [`intersect_line_torus`] on exact data (`d ≠ 0`).
-pub fn line_torus(
+pub fn intersect_line_torus_exact(
     o: &[Rational; 3],
     d: &[Rational; 3],
     torus: &TorusData,
 ) -> Certified<LineCut<3>> {
     if torus.major.cmp0() == std::cmp::Ordering::Equal {
         let sphere = QuadricForm::sphere_exact(&torus.center, &torus.minor);
-        return line_quadric(o, d, &sphere);
+        return intersect_line_quadric_exact(o, d, &sphere);
     }
     let a = &torus.axis;
     let w: [Rational; 3] = std::array::from_fn(|i| Rational::from(&o[i] - &torus.center[i]));

@@ -22,10 +22,10 @@ mod line;
 mod line_surface;
 mod quadric;
 
-pub use conic_conic::{intersect_conics, ConicCut, ConicHit};
+pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
 pub use line::{LineCut, LineHit};
 pub use line_surface::{
-    intersect_line_conic, intersect_line_quadric, intersect_line_torus, line_quadric, line_torus,
-    TorusData,
+    intersect_line_conic, intersect_line_quadric, intersect_line_quadric_exact,
+    intersect_line_torus, intersect_line_torus_exact, TorusData,
 };
 pub use quadric::{Conic, QuadricForm};

@@ -46,7 +46,7 @@ pub fn closest_approach_equations<T: Real, A: Curve<D>, B: Curve<D>, const D: us
 
 /// All intersection points of two curves (§6.4, §6.5), float only, from their walk
 /// samples `[(t, Δt)]` (§2.3).
-pub fn intersect_curves_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
+pub fn intersect_curve_curve_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
     a: &A,
     b: &B,
     a_samples: &[(f64, f64)],
@@ -238,7 +238,7 @@ impl<A: Curve<3>, B: Curve<3>> System for ClosestApproachSystem<'_, A, B> {
 /// All intersection points of two plane curves (§6.4), certified: roots of (6.5) in
 /// verified boxes, tangencies `verified_singular`, `complete` when the subdivision of
 /// the `(t₁, t₂)` domain finished.
-pub fn intersect_curves_2d<A: Curve<2>, B: Curve<2>>(
+pub fn intersect_curve2_curve2<A: Curve<2>, B: Curve<2>>(
     a: &A,
     b: &B,
     a_samples: &[(f64, f64)],
@@ -249,7 +249,7 @@ pub fn intersect_curves_2d<A: Curve<2>, B: Curve<2>>(
     use crate::ops::certified::{
         certify_roots, curve_point, curve_unknowns, CertifiedPoint, Unknowns,
     };
-    let guesses: Vec<Vec<f64>> = intersect_curves_f64(a, b, a_samples, b_samples, precision)
+    let guesses: Vec<Vec<f64>> = intersect_curve_curve_f64(a, b, a_samples, b_samples, precision)
         .iter()
         .map(|p| p.params.to_vec())
         .collect();

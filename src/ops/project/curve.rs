@@ -52,7 +52,7 @@ pub fn foot_equation<T: Real, C: Curve<D>, const D: usize>(
 ///
 /// `nearest` also adds the end points of an open curve as candidates and returns only
 /// the nearest point (§3.2 "Nearest projection", exact mode).
-pub fn project_point_on_curve_f64<C: Curve<D>, const D: usize>(
+pub fn project_point_curve_f64<C: Curve<D>, const D: usize>(
     curve: &C,
     p: &[f64; D],
     samples: &[(f64, f64)],
@@ -167,7 +167,7 @@ impl<C: Curve<D>, const D: usize> System for CurveFootSystem<'_, C, D> {
 ///
 /// A continuum of feet (the centre of a circle) cannot be enclosed by isolated boxes:
 /// the search then spends its budget and the answer is `undecided`.
-pub fn project_point_on_curve<C: Curve<D>, const D: usize>(
+pub fn project_point_curve<C: Curve<D>, const D: usize>(
     curve: &C,
     p: &[f64; D],
     samples: &[(f64, f64)],
@@ -175,11 +175,11 @@ pub fn project_point_on_curve<C: Curve<D>, const D: usize>(
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<D>>>, crate::GeomError> {
     use crate::ops::certified::{certify_roots, curve_point, curve_unknowns, CertifiedPoint};
-    let guesses: Vec<Vec<f64>> =
-        match project_point_on_curve_f64(curve, p, samples, precision, false) {
-            CurveFeet::Finite(f) => f.iter().map(|x| vec![x.t]).collect(),
-            CurveFeet::Infinite => Vec::new(),
-        };
+    let guesses: Vec<Vec<f64>> = match project_point_curve_f64(curve, p, samples, precision, false)
+    {
+        CurveFeet::Finite(f) => f.iter().map(|x| vec![x.t]).collect(),
+        CurveFeet::Infinite => Vec::new(),
+    };
     let sys = CurveFootSystem { curve, point: *p };
     let roots = certify_roots(&sys, &curve_unknowns(curve), &guesses, opts)?;
     Ok(roots.map(|rs| {

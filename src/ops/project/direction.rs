@@ -67,7 +67,7 @@ pub fn ray_through<S: Surface>(
 
 /// All projections of `p` onto `surface` along `dir` (§3.5), float only, ordered by
 /// travel `t`; with `nearest`, only the one of smallest `|t|`.
-pub fn project_along_direction_f64<S: Surface>(
+pub fn project_point_surface_along_f64<S: Surface>(
     surface: &S,
     p: &[f64; 3],
     dir: &[f64; 3],

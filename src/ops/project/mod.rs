@@ -6,10 +6,10 @@ pub mod direction;
 pub mod surface;
 
 pub use curve::{
-    foot_equation, project_point_on_curve, project_point_on_curve_f64, CurveFeet, CurveFoot,
+    foot_equation, project_point_curve, project_point_curve_f64, CurveFeet, CurveFoot,
 };
-pub use direction::{project_along_direction_f64, Ray};
+pub use direction::{project_point_surface_along_f64, Ray};
 pub use surface::{
-    project_point_on_surface, project_point_on_surface_f64, surface_foot_equations, IsoCurve,
+    project_point_surface, project_point_surface_f64, surface_foot_equations, IsoCurve,
     SurfaceFeet, SurfaceFoot,
 };

@@ -7,7 +7,7 @@
 //! surface with an open direction the boundary curves are projected too (§3.4
 //! "Nearest", exact mode).
 
-use super::curve::{changes_sign, project_point_on_curve_f64, CurveFeet};
+use super::curve::{changes_sign, project_point_curve_f64, CurveFeet};
 use crate::certify::system::value_and_rows;
 use crate::certify::System;
 use crate::curve::Curve;
@@ -66,7 +66,7 @@ pub fn surface_foot_equations<T: Real, S: Surface>(
 /// All feet of the perpendiculars from `p` onto `surface` (§3.4), float only, from the
 /// walk nodes `nodes = [(u, v, Δu, Δv)]` (§2.3). With `nearest`, only the nearest point
 /// of the closed domain (boundary curves included) is returned.
-pub fn project_point_on_surface_f64<S: Surface>(
+pub fn project_point_surface_f64<S: Surface>(
     surface: &S,
     p: &[f64; 3],
     nodes: &[[f64; 4]],
@@ -223,7 +223,7 @@ fn boundary_candidates<S: Surface>(
             let dt = (hi - lo) / n as f64;
             let samples: Vec<(f64, f64)> = (0..=n).map(|i| (lo + i as f64 * dt, dt)).collect();
             if let CurveFeet::Finite(feet) =
-                project_point_on_curve_f64(&iso, p, &samples, precision, true)
+                project_point_curve_f64(&iso, p, &samples, precision, true)
             {
                 out.extend(feet.into_iter().map(|f| {
                     let params = if direction == 0 {
@@ -306,9 +306,9 @@ impl<S: Surface> System for SurfaceFootSystem<'_, S> {
 }
 
 /// All feet from `p` onto `surface` (§3.4), certified like
-/// [`super::curve::project_point_on_curve`]: roots of (3.9) in verified boxes,
+/// [`super::curve::project_point_curve`]: roots of (3.9) in verified boxes,
 /// `complete` when the subdivision covered the domain.
-pub fn project_point_on_surface<S: Surface>(
+pub fn project_point_surface<S: Surface>(
     surface: &S,
     p: &[f64; 3],
     nodes: &[[f64; 4]],
@@ -317,7 +317,7 @@ pub fn project_point_on_surface<S: Surface>(
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
     use crate::ops::certified::{certify_roots, surface_point, surface_unknowns, CertifiedPoint};
     let guesses: Vec<Vec<f64>> =
-        match project_point_on_surface_f64(surface, p, nodes, precision, false) {
+        match project_point_surface_f64(surface, p, nodes, precision, false) {
             SurfaceFeet::Finite(f) => f.iter().map(|x| x.params.to_vec()).collect(),
             SurfaceFeet::Infinite => Vec::new(),
         };
