@@ -1,11 +1,9 @@
 //! The JSON case format of the command line (spec/CASES.md): reading cases, turning
 //! them into geometric objects, and writing results as JSON Lines.
 
+mod answer_out;
 mod build;
 pub mod case;
-pub mod curved;
-mod exact_curved;
-mod linear_out;
 pub mod number;
 pub mod objects;
 pub mod result;
@@ -16,5 +14,5 @@ mod verify;
 pub use case::{read_cases, Case, Op, Options, ReadCase};
 pub use number::{Double, Num};
 pub use objects::ObjectSpec;
-pub use solve::solve_case;
+pub use solve::{answer, solve_case};
 pub use verify::verify_case;
