@@ -4,6 +4,7 @@
 mod answer_out;
 mod build;
 pub mod case;
+mod de;
 pub mod number;
 pub mod objects;
 pub mod result;
