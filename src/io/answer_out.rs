@@ -55,7 +55,7 @@ fn line(l: &LineAnswer) -> LineOut {
 }
 
 /// The result record of an answer.
-pub(crate) fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
+pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
     let mut r = CaseResult::certified(id, c.value.kind(), c);
     match &c.value {
         Answer::Empty => r.points = Some(vec![]),

@@ -96,7 +96,7 @@ fn range<T: FromNum>(r: &Option<[Num; 2]>, field: &str) -> Result<Option<[T; 2]>
 }
 
 /// One object of a case as a shape; errors name fields below `prefix`.
-pub(crate) fn shape(spec: &ObjectSpec, prefix: &str) -> Result<Shape, GeomError> {
+pub fn shape(spec: &ObjectSpec, prefix: &str) -> Result<Shape, GeomError> {
     let at = |e: GeomError| e.at(prefix);
     Ok(match spec {
         ObjectSpec::Curve3(c) => Shape::Curve(c.build().map_err(at)?),
@@ -120,7 +120,7 @@ pub(crate) fn shape(spec: &ObjectSpec, prefix: &str) -> Result<Shape, GeomError>
 
 /// A query point: doubles, or rationals when a coordinate is exact text that no double
 /// equals; errors name `field[i]`.
-pub(crate) fn position(v: &[Num], field: &str) -> Result<Position, GeomError> {
+pub fn position(v: &[Num], field: &str) -> Result<Position, GeomError> {
     let doubles: Result<Vec<f64>, BuildError> = v
         .iter()
         .enumerate()

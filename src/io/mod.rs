@@ -12,8 +12,11 @@ pub mod shapes;
 mod solve;
 mod verify;
 
+pub use answer_out::result as answer_result;
+pub use build::{position, shape};
 pub use case::{read_cases, Case, Op, Options, ReadCase};
 pub use number::{Double, Num};
 pub use objects::ObjectSpec;
-pub use solve::{answer, solve_case};
+pub use result::CaseResult;
+pub use solve::{answer, options, solve_case};
 pub use verify::verify_case;

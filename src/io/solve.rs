@@ -31,7 +31,7 @@ pub fn solve_case(read: ReadCase) -> CaseResult {
 }
 
 /// The options of a case.
-pub(crate) fn options(case: &Case) -> Result<Options, GeomError> {
+pub fn options(case: &Case) -> Result<Options, GeomError> {
     let o = &case.options;
     Options::new(
         o.tolerance.map(|d| d.0),
