@@ -31,6 +31,8 @@ pub enum LinearObject<T: Coord> {
 
 /// A linear object with its numbers as given: all doubles, or exact rationals.
 #[derive(Debug, Clone, PartialEq)]
+// Shapes are built once per call: their size does not matter.
+#[allow(clippy::large_enum_variant)]
 pub enum Linear {
     Double(LinearObject<f64>),
     Exact(LinearObject<Rational>),

@@ -21,7 +21,9 @@ mod exact;
 mod line;
 mod line_surface;
 pub(crate) mod pairs;
+mod params;
 mod quadric;
+mod rounding;
 
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
 pub use line::{LineCut, LineHit};
