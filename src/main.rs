@@ -20,13 +20,13 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     /// Solve the cases of FILE (a JSON array or JSON Lines; `-` is standard input) and
-    /// write one result per case as JSON Lines (spec/CASES.md).
+    /// write one result per case as JSON Lines (docs/FORMAT.md).
     Solve {
         /// The case file, or `-` for standard input.
         file: String,
     },
     /// Certify or refute the `claim` of each case of FILE (another program's answer,
-    /// spec/CASES.md "Claims"): confirmed / refuted / undecided per claimed item, and
+    /// docs/FORMAT.md "Claims"): confirmed / refuted / undecided per claimed item, and
     /// the certified solutions the claim missed. Exit status 3 if any item is not
     /// confirmed or a solution was missed.
     Verify {

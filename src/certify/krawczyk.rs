@@ -1,4 +1,4 @@
-//! The Krawczyk operator (CERTIFICATION.md "verified"): existence, uniqueness and
+//! The Krawczyk operator (docs/CERTIFICATES.md "verified"): existence, uniqueness and
 //! exclusion of roots of a square system in a box, at any interval precision.
 //!
 //! For a box `X`, its midpoint `m`, the interval Jacobian `J(X)` and a preconditioner

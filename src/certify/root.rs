@@ -1,5 +1,5 @@
 //! Certify one root given as a float estimate (for instance a Newton result of an
-//! operation's fast path): CERTIFICATION.md "verified" for a single solution, with the
+//! operation's fast path): docs/CERTIFICATES.md "verified" for a single solution, with the
 //! escalation f64 intervals → MPFR 128, 256, … bits, and the singular certificate when
 //! the root is (nearly) double.
 

@@ -1,4 +1,4 @@
-//! All roots of a system in a parameter box (CERTIFICATION.md "verified",
+//! All roots of a system in a parameter box (docs/CERTIFICATES.md "verified",
 //! "verified_singular", "Completeness", "Escalation"): subdivision at f64 interval
 //! precision; the boxes it cannot decide are grouped into clusters, each tried by the
 //! cluster tests at rising precision; a cluster that stays undecided is subdivided again
@@ -168,7 +168,7 @@ impl Ledger {
 }
 
 /// Every root of `sys` in the box `domain` (module doc), with the certificate of
-/// CERTIFICATION.md: each root `verified` (unique in its box) or `verified_singular`;
+/// docs/CERTIFICATES.md: each root `verified` (unique in its box) or `verified_singular`;
 /// `complete` exactly when no part of the domain is left undecided.
 ///
 /// Errors: a system of size 0 or above [`super::system::MAX_DIM`], or one whose `eval`

@@ -1,4 +1,4 @@
-//! Subdivision of a parameter box at one precision (CERTIFICATION.md "Completeness"):
+//! Subdivision of a parameter box at one precision (docs/CERTIFICATES.md "Completeness"):
 //! every box is excluded (its image misses 0, or its Krawczyk image misses it), decided
 //! by a unique root (Krawczyk on the box grown by a sixteenth, so that roots on a
 //! bisection plane are still caught), narrowed by `X ∩ K(X)`, or bisected — until it is

@@ -36,7 +36,7 @@ pub fn run() -> ExitCode {
     }
     println!();
     println!("Every row is decided for the exact input; coordinates are correctly rounded.");
-    println!("Run `geocert solve FILE` for JSON Lines of the same results (spec/CASES.md).");
+    println!("Run `geocert solve FILE` for JSON Lines of the same results (docs/FORMAT.md).");
     if failed {
         ExitCode::from(1)
     } else {

@@ -1,4 +1,4 @@
-//! `geocert verify FILE|-`: certify or refute the `claim` of each case (CASES.md
+//! `geocert verify FILE|-`: certify or refute the `claim` of each case (docs/FORMAT.md
 //! "Claims"), one JSON line per case. Exit status: 0 when every claim is confirmed,
 //! 1 when a case failed to read or solve, 3 when some claimed item was refuted or
 //! left undecided or some solution was missed.

@@ -1,4 +1,4 @@
-//! The implicit conic of the plane (spec/CASES.md `conic2`; OPERATIONS.md §1.7):
+//! The implicit conic of the plane (docs/FORMAT.md `conic2`; OPERATIONS.md §1.7):
 //! `F(x, y) = a x² + b xy + c y² + d x + e y + f`, i.e. `a₁₁ = a`, `a₁₂ = b/2`,
 //! `a₂₂ = c`, `a₁₃ = d/2`, `a₂₃ = e/2`, `a₃₃ = f` in the matrix form of (1.19).
 //! Implements [`Implicit<2>`] (value, gradient, Hessian, generic over [`Real`]: each a

@@ -1,5 +1,5 @@
 //! The local frame of analytic curves and surfaces (OPERATIONS.md §1.5 "origin `p`,
-//! orthonormal `i₁, i₂, i₃`"; spec/CASES.md "Frames"): `Z` is `axis` normalised; `X` is
+//! orthonormal `i₁, i₂, i₃`"; docs/FORMAT.md "Frames"): `Z` is `axis` normalised; `X` is
 //! `ref` made orthogonal to `Z` and normalised; without `ref`, `e` is the coordinate
 //! unit vector least aligned with `Z` (the smallest `|axis_i|`, first in x, y, z order
 //! on ties), so that axis +z gives `X = +x`; `Y = Z × X`.

@@ -1,4 +1,4 @@
-//! Linear objects (CASES.md "Objects"; OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8),
+//! Linear objects (docs/FORMAT.md "Objects"; OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8),
 //! generic over the coordinate type: `f64` (each double taken as an exact value) or
 //! `rug::Rational` (exact inputs, e.g. from `"p/q"` strings). Constructors validate and
 //! never normalise or round: a zero direction, collinear plane vectors (decided exactly),

@@ -1,4 +1,4 @@
-//! Answers of the front door → result records (CASES.md "Results"): a field-for-field
+//! Answers of the front door → result records (docs/FORMAT.md "Results"): a field-for-field
 //! translation; exact rationals are written as `"p/q"` strings.
 
 use rug::Rational;

@@ -1,4 +1,4 @@
-//! Cases of the command line (spec/CASES.md "Cases"): reading a file of cases and
+//! Cases of the command line (docs/FORMAT.md "Cases"): reading a file of cases and
 //! turning each into a typed [`Case`], or an error naming the offending field.
 
 use super::de::deserialize_at;
@@ -37,7 +37,7 @@ impl Op {
     }
 }
 
-/// `options` of a case (CASES.md; OPERATIONS.md §12 for ε and δ).
+/// `options` of a case (docs/FORMAT.md; OPERATIONS.md §12 for ε and δ).
 #[derive(Debug, Clone, Default, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Options {
@@ -45,8 +45,8 @@ pub struct Options {
     pub tolerance: Option<Double>,
     /// The equality tolerance δ of the float path (§12).
     pub equal_tolerance: Option<Double>,
-    /// The precision cap of MPFR escalation, in bits (default 512; CERTIFICATION.md
-    /// names 4096, reachable by setting it).
+    /// The precision cap of MPFR escalation, in bits (default 512; the specification's
+    /// 4096 is reachable by setting it; docs/CERTIFICATES.md "Escalation").
     pub max_bits: Option<u32>,
     /// The box budget of subdivision.
     pub max_boxes: Option<u64>,

@@ -1,4 +1,4 @@
-//! The JSON case format of the command line (spec/CASES.md): reading cases, turning
+//! The JSON case format of the command line (docs/FORMAT.md): reading cases, turning
 //! them into geometric objects, and writing results as JSON Lines.
 
 mod answer_out;

@@ -1,4 +1,4 @@
-//! Numbers in the case format (spec/CASES.md "Numbers").
+//! Numbers in the case format (docs/FORMAT.md "Numbers").
 //!
 //! A JSON number is parsed correctly rounded (serde_json's `float_roundtrip`) and is
 //! then an exact double. Linear objects also accept a string: `"p/q"` or a decimal

@@ -1,4 +1,4 @@
-//! Results of the case format (spec/CASES.md "Results"), written as JSON Lines.
+//! Results of the case format (docs/FORMAT.md "Results"), written as JSON Lines.
 //!
 //! Doubles are printed in the shortest form that reads back to the same bits
 //! (serde_json uses ryu). A value that has no finite double (an exact coordinate
@@ -134,7 +134,7 @@ pub struct CaseResult {
     pub missed: Option<Vec<PointOut>>,
 }
 
-/// The verdict of `verify` on one claimed item (CASES.md "Claims").
+/// The verdict of `verify` on one claimed item (docs/FORMAT.md "Claims").
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ClaimOut {
     /// `kind`, or `points[i]` of the claim.

@@ -1,4 +1,4 @@
-//! Parametric and implicit surfaces (OPERATIONS.md §1.3–§1.4, §1.6; spec/CASES.md
+//! Parametric and implicit surfaces (OPERATIONS.md §1.3–§1.4, §1.6; docs/FORMAT.md
 //! surface types).
 //!
 //! Like curves, a surface supplies only its value and derivatives, generic over the

@@ -1,4 +1,4 @@
-//! f64 intervals with outward rounding (ARCHITECTURE.md "Numbers", CERTIFICATION.md
+//! f64 intervals with outward rounding (ARCHITECTURE.md "Numbers", docs/CERTIFICATES.md
 //! "Escalation": the f64 interval stage).
 //!
 //! An [`Interval`] is a closed, connected set of reals `[lo, hi]` with double bounds

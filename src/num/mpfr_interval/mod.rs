@@ -1,5 +1,5 @@
 //! Intervals over `rug::Float` (MPFR) at any precision (ARCHITECTURE.md "Numbers",
-//! CERTIFICATION.md "Escalation": 128, 256, 512, … bits).
+//! docs/CERTIFICATES.md "Escalation": 128, 256, 512, … bits).
 //!
 //! An [`MpfrInterval`] is `[lo, hi]` with both bounds MPFR numbers of one precision `p`,
 //! with the same IEEE 1788 set semantics as [`crate::num::Interval`] (dropped domain

@@ -1,4 +1,4 @@
-//! The algebraic pairs of the front door, decided exactly (CERTIFICATION.md `exact`):
+//! The algebraic pairs of the front door, decided exactly (docs/CERTIFICATES.md `exact`):
 //! a line or segment against a whole sphere, ellipsoid (any frame) or ring torus
 //! (OPERATIONS.md §5.2 with §1.6), and in the plane a 2D line or segment or a conic
 //! against a whole `circle2`, `ellipse2` or a `conic2` (§6.3–§6.4). Shapes whose implicit
