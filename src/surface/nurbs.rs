@@ -304,3 +304,28 @@ impl Surface for NurbsSurface {
         self.evaluate(u, v, order, !is_point(u) || !is_point(v))
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Interval;
+    use crate::surface::taylor_fast::tests::{patch_points, KNOTS};
+
+    /// An f64 interval box inside one span pair takes the fast centred form of
+    /// `taylor_fast`, at scales from 1e−250 to 1e250.
+    #[test]
+    fn interval_boxes_take_the_fast_path() {
+        for scale in [1e-250, 1e-12, 1e250] {
+            let (points, weights) = patch_points(scale);
+            let knots = KNOTS.to_vec();
+            let s =
+                NurbsSurface::new([3, 3], knots.clone(), knots, &points, Some(&weights)).unwrap();
+            let (u, v) = (
+                Interval::from_bounds(0.3, 0.3 + 1e-4),
+                Interval::from_bounds(0.6, 0.6 + 1e-4),
+            );
+            let fast = try_centred_jet(&s.net, s.source(0, 3), &u, s.source(1, 3), &v, 2);
+            assert_eq!(Some(s.jet(&u, &v, 2)), fast, "scale {scale:e}");
+        }
+    }
+}

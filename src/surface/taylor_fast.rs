@@ -21,10 +21,8 @@
 
 use super::basis::{bernstein_jet, bspline_jet, BasisJet};
 use super::tensor::{quotient, Net, ORDERS};
-use crate::certify::guarded::Guarded;
 use crate::num::midrad::{inflate, up, MidRad, EPS, ETA, U};
 use crate::num::{Interval, Real};
-use std::any::Any;
 
 /// Degrees up to 7 per direction: `(p+1)(q+1) ≤ 64` terms per sum, as [`inflate`] needs.
 const MAX_N: usize = 8;
@@ -156,14 +154,15 @@ fn centre(t: &Interval) -> Option<(f64, f64, bool)> {
 }
 
 /// The centred form of [`super::taylor::taylor_tensor_jet`] over the box `u × v` on one
-/// pair of spans, for `T = Interval` and for the certifier's `Guarded<Interval>`, in
-/// midpoint–radius form; `None` for any other number type, or when the fast path
-/// declines (module doc).
+/// pair of spans, for the number types that are f64 intervals ([`Real::as_f64_interval`]:
+/// `Interval`, and the certifier's `Guarded<Interval>`), in midpoint–radius form; `None`
+/// for any other number type, or when the fast path declines (module doc).
 ///
-/// `Guarded` (smoothness-tracking) values: on one pair of spans the patch is a
-/// polynomial, or a quotient whose denominator the fast path has proven positive over
-/// the box, so it is `C^∞` there and the jet is smooth exactly when both parameters are
-/// (the hull over several spans is marked non-smooth by the caller's join).
+/// The result goes back through [`Real::from_f64_interval`] with `u, v` as arguments:
+/// on one pair of spans the patch is a polynomial, or a quotient whose denominator the
+/// fast path has proven positive over the box, so it is `C^∞` there (a `Guarded` jet is
+/// smooth exactly when both parameters are; the hull over several spans is marked
+/// non-smooth by the caller's join).
 pub(crate) fn try_centred_jet<T: Real>(
     net: &Net,
     source_u: BasisSource,
@@ -172,26 +171,18 @@ pub(crate) fn try_centred_jet<T: Real>(
     v: &T,
     order: usize,
 ) -> Option<Vec<[T; 3]>> {
-    let (u, v) = (u as &dyn Any, v as &dyn Any);
-    let out: Box<dyn Any> =
-        if let (Some(u), Some(v)) = (u.downcast_ref::<Interval>(), v.downcast_ref::<Interval>()) {
-            Box::new(interval_jet(net, source_u, u, source_v, v, order)?)
-        } else {
-            let u = u.downcast_ref::<Guarded<Interval>>()?;
-            let v = v.downcast_ref::<Guarded<Interval>>()?;
-            let jet = interval_jet(net, source_u, &u.value, source_v, &v.value, order)?;
-            let smooth = u.smooth && v.smooth;
-            let guard = |value: Interval| Guarded {
-                value,
-                smooth: smooth && !value.is_empty(),
-            };
-            Box::new(
-                jet.into_iter()
-                    .map(|e| e.map(guard))
-                    .collect::<Vec<[Guarded<Interval>; 3]>>(),
-            )
-        };
-    out.downcast().ok().map(|b| *b)
+    let jet = interval_jet(net, source_u, &view(u)?, source_v, &view(v)?, order)?;
+    let back = |x: &Interval| T::from_f64_interval([x.lo(), x.hi()], &[u, v]);
+    jet.iter()
+        .map(|[x, y, z]| Some([back(x)?, back(y)?, back(z)?]))
+        .collect()
+}
+
+/// The f64 interval a parameter is, if it is one and not empty (an empty parameter
+/// takes the generic path, as [`centre`] would decline it).
+fn view<T: Real>(t: &T) -> Option<Interval> {
+    let [lo, hi] = t.as_f64_interval()?;
+    (lo <= hi).then(|| Interval::from_bounds(lo, hi))
 }
 
 fn interval_jet(
@@ -468,16 +459,18 @@ fn centred_f64<const D: usize>(
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::num::{IntervalLike, MpfrInterval};
-    use crate::surface::nurbs::NurbsSurface;
     use crate::surface::taylor::{centre as generic_centre, taylor_tensor_jet};
-    use crate::surface::Surface;
 
-    /// A rational bicubic patch on one span pair `[0, 1]²` (Bézier knots), net scaled
-    /// by `scale`, with varied weights.
-    fn patch(scale: f64) -> NurbsSurface {
+    /// Bézier knots of degree 3: one span pair `[0, 1]²`.
+    pub(in crate::surface) const KNOTS: [f64; 8] = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+
+    /// The control points (rows ↔ `v`) and weights of a rational bicubic patch on
+    /// [`KNOTS`], net scaled by `scale`, with varied weights.
+    #[allow(clippy::type_complexity)]
+    pub(in crate::surface) fn patch_points(scale: f64) -> (Vec<Vec<[f64; 3]>>, Vec<Vec<f64>>) {
         let points: Vec<Vec<[f64; 3]>> = (0..4)
             .map(|i| {
                 (0..4)
@@ -499,27 +492,38 @@ mod tests {
                     .collect()
             })
             .collect();
-        let knots = vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
-        NurbsSurface::new([3, 3], knots.clone(), knots, &points, Some(&weights)).unwrap()
+        (points, weights)
     }
 
-    fn source(s: &NurbsSurface, d: usize) -> BasisSource<'_> {
+    /// The net of [`patch_points`], rows flattened in order.
+    fn patch(scale: f64) -> Net {
+        let (points, weights) = patch_points(scale);
+        Net {
+            rows: 4,
+            cols: 4,
+            points: points.concat(),
+            weights: Some(weights.concat()),
+        }
+    }
+
+    fn source() -> BasisSource<'static> {
         BasisSource::BSpline {
-            knots: &s.knots[d],
+            knots: &KNOTS,
             degree: 3,
             span: 3,
         }
     }
 
-    fn fast(s: &NurbsSurface, u: &Interval, v: &Interval) -> Vec<[Interval; 3]> {
-        try_centred_jet(&s.net, source(s, 0), u, source(s, 1), v, 2).expect("fast path")
+    fn fast(net: &Net, u: &Interval, v: &Interval) -> Vec<[Interval; 3]> {
+        try_centred_jet(net, source(), u, source(), v, 2).expect("fast path")
     }
 
-    fn generic(s: &NurbsSurface, u: &Interval, v: &Interval) -> Vec<[Interval; 3]> {
+    /// The generic centred form (what `NurbsSurface::jet` computes for every other type).
+    fn generic<T: Real>(net: &Net, u: &T, v: &T) -> Vec<[T; 3]> {
         let ((cu, du, iu), (cv, dv, iv)) = (generic_centre(u), generic_centre(v));
-        let bu = bspline_jet(&s.knots[0], 3, 3, &cu, 3);
-        let bv = bspline_jet(&s.knots[1], 3, 3, &cv, 3);
-        taylor_tensor_jet(&s.net, &bu, &du, 0, &bv, &dv, 0, 2, iu && iv)
+        let bu = bspline_jet(&KNOTS, 3, 3, &cu, 3);
+        let bv = bspline_jet(&KNOTS, 3, 3, &cv, 3);
+        taylor_tensor_jet(net, &bu, &du, 0, &bv, &dv, 0, 2, iu && iv)
     }
 
     #[test]
@@ -558,25 +562,18 @@ mod tests {
     fn other_number_types_take_the_generic_path() {
         let s = patch(1.0);
         let m = MpfrInterval::from_bounds(0.25, 0.5, 100);
-        assert!(try_centred_jet(&s.net, source(&s, 0), &m, source(&s, 1), &m, 2).is_none());
-        assert!(try_centred_jet(&s.net, source(&s, 0), &0.3, source(&s, 1), &0.3, 2).is_none());
+        assert!(try_centred_jet(&s, source(), &m, source(), &m, 2).is_none());
+        assert!(try_centred_jet(&s, source(), &0.3, source(), &0.3, 2).is_none());
         let unbounded = Interval::ENTIRE;
         let iv = Interval::from_bounds(0.25, 0.5);
-        assert!(try_centred_jet::<Interval>(
-            &s.net,
-            source(&s, 0),
-            &unbounded,
-            source(&s, 1),
-            &iv,
-            2
-        )
-        .is_none());
+        assert!(try_centred_jet::<Interval>(&s, source(), &unbounded, source(), &iv, 2).is_none());
     }
 
     #[test]
     fn huge_and_tiny_nets_are_enclosed() {
         // The fast path answers at 1e±250 and its enclosure contains the 200-bit MPFR
-        // enclosure of the same box (which contains the jet).
+        // enclosure of the same box (which contains the jet; `NurbsSurface::jet` takes
+        // this path: nurbs's tests).
         for scale in [1e-250, 1e-12, 1e250] {
             let s = patch(scale);
             let (bu, bv) = (
@@ -588,8 +585,7 @@ mod tests {
                 MpfrInterval::from_bounds(0.6, 0.6 + 1e-4, 200),
             );
             let f = fast(&s, &bu, &bv);
-            assert_eq!(f, s.jet(&bu, &bv, 2), "the surface takes the fast path");
-            let m = s.jet(&mu, &mv, 2);
+            let m = generic(&s, &mu, &mv);
             for (e, (fe, me)) in f.iter().zip(&m).enumerate() {
                 for c in 0..3 {
                     assert!(
