@@ -7,8 +7,8 @@
 
 use super::boxes::{self, IBox};
 use super::krawczyk::{excluded_by_image, image, krawczyk, tighten, Krawczyk, VerifiedRoot};
+use super::ledger::Ledger;
 use super::level::CertInterval;
-use super::solve::Ledger;
 use super::system::System;
 use crate::num::IntervalLike;
 
