@@ -146,16 +146,6 @@ fn exact_corner_range(
     Interval::from_rational(min).hull(&Interval::from_rational(max))
 }
 
-fn random_interval(rng: &mut Rng, emin: i32, emax: i32) -> Interval {
-    let a = rng.double(emin, emax);
-    let b = if rng.unit() < 0.3 {
-        a
-    } else {
-        rng.double(emin, emax)
-    };
-    Interval::from_bounds(a.min(b), a.max(b))
-}
-
 #[test]
 fn add_sub_mul_are_tightest_on_random_bounded_intervals() {
     let mut rng = Rng::new(5);
@@ -287,6 +277,7 @@ fn set_operations() {
 
 #[test]
 fn powi_encloses_exact_powers_and_is_tight_for_small_exponents() {
+    // (Within 2|n| + 2 ulps of the tightest: mpfr_interval's tests, against MPFR.)
     let mut rng = Rng::new(6);
     for _ in 0..2000 {
         let x = random_interval(&mut rng, -30, 30);
@@ -298,20 +289,6 @@ fn powi_encloses_exact_powers_and_is_tight_for_small_exponents() {
                     let p = Float::with_val(4000, v).pow(n);
                     assert!(encloses(y.lo(), y.hi(), &p), "{x:?}^{n} = {y:?} misses {p}");
                 }
-            }
-            // Within 2|n| + 2 ulps of the tightest result (MPFR, tightest by design).
-            let t = crate::num::MpfrInterval::from_interval(&x, 53)
-                .powi(n)
-                .to_interval();
-            assert!(t.is_subset(&y));
-            if y.is_bounded() && t.is_bounded() && t.lo() != 0.0 {
-                let ulps =
-                    |u: f64, v: f64| (u.to_bits() as i64 - v.to_bits() as i64).unsigned_abs();
-                let k = 2 * n.unsigned_abs() as u64 + 2;
-                assert!(
-                    ulps(y.lo().abs(), t.lo().abs()) <= k && ulps(y.hi().abs(), t.hi().abs()) <= k,
-                    "{x:?}^{n}: {y:?} vs tightest {t:?}"
-                );
             }
         }
     }
