@@ -430,40 +430,30 @@ pub fn intersect_line_plane_batch(
     );
 }
 
+/// For `robust`'s tests, which drive it with every robustness generator: the
+/// four-lane (AVX) kernel end to end, whatever the CPU's widest — `batch::run` answers
+/// `cases` as the scalar path does (nothing to run on a CPU without AVX and FMA).
+#[cfg(test)]
+pub(crate) fn assert_four_lane_run_equals_scalar(cases: &[LinePlaneCase]) {
+    let lanes = lane_kernel!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>, 4);
+    if lanes.is_none() {
+        return; // no AVX/FMA
+    }
+    batch::testing::assert_run_equals_scalar(
+        cases,
+        batch_shape,
+        lanes,
+        |&(l, p)| intersect_line_plane(l, p),
+        |&(l, p)| exact_tiers(l, p),
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::geom::Line;
     use crate::num::error_bound::ErrorBound;
     use crate::num::lane::MAX_LANES;
-
-    /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
-    /// `batch::run` equal the scalar ones on every generator.
-    #[test]
-    fn four_lane_kernel_equals_scalar() {
-        use crate::robust::{case, case::same, Case, Construction, Generator};
-        let lanes = lane_kernel!(fast_lanes, LinePlaneCase, Certified<LinePlane<Rounded>>, 4);
-        if lanes.is_none() {
-            return; // no AVX/FMA
-        }
-        let objs: Vec<_> = (0..400)
-            .flat_map(|i| Generator::ALL.map(|g| case(Construction::LinePlane, g, i)))
-            .map(|c| {
-                let Case::LinePlane(l, p) = c else {
-                    unreachable!()
-                };
-                (l.object(same).unwrap(), p.object(same).unwrap())
-            })
-            .collect();
-        let cases: Vec<LinePlaneCase> = objs.iter().map(|(l, p)| (l.linear(), p)).collect();
-        batch::testing::assert_run_equals_scalar(
-            &cases,
-            batch_shape,
-            lanes,
-            |&(l, p)| intersect_line_plane(l, p),
-            |&(l, p)| exact_tiers(l, p),
-        );
-    }
 
     /// The lane kernels themselves decide a lane group of generic cases (lines and one
     /// plane) and write the scalar answers; a lane whose scale is out of range (a 1e200
@@ -540,7 +530,7 @@ mod tests {
 
     /// A generic line and segment from the seed `k`.
     fn segment_and_line(k: u64) -> (Line<f64>, crate::geom::Segment<f64>) {
-        let mut r = crate::robust::rng::Rng::new(k);
+        let mut r = crate::num::rng::Rng::new(k);
         let mut v = || batch::testing::unit_vector(&mut r);
         (
             Line::new(v(), v()).unwrap(),

@@ -716,44 +716,34 @@ pub(crate) fn bound_planes() -> [PlaneData<crate::num::error_bound::ErrorBound>;
     ]
 }
 
+/// For `robust`'s tests, which drive it with every robustness generator: the
+/// four-lane (AVX) kernel end to end, whatever the CPU's widest — `batch::run` answers
+/// `cases` as the scalar path does (nothing to run on a CPU without AVX and FMA).
+#[cfg(test)]
+pub(crate) fn assert_four_lane_run_equals_scalar(cases: &[PlanePlaneCase]) {
+    let lanes = lane_kernel!(
+        fast_lanes,
+        PlanePlaneCase,
+        Certified<PlanePlane<Rounded>>,
+        4
+    );
+    if lanes.is_none() {
+        return; // no AVX/FMA
+    }
+    batch::testing::assert_run_equals_scalar(
+        cases,
+        batch_shape,
+        lanes,
+        |&(a, b)| intersect_plane_plane(a, b),
+        |&(a, b)| exact_tiers(a, b),
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
     use crate::num::error_bound::ErrorBound;
     use crate::num::lane::MAX_LANES;
-
-    /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
-    /// `batch::run` equal the scalar ones on every generator.
-    #[test]
-    fn four_lane_kernel_equals_scalar() {
-        use crate::robust::{case, case::same, Case, Construction, Generator};
-        let lanes = lane_kernel!(
-            fast_lanes,
-            PlanePlaneCase,
-            Certified<PlanePlane<Rounded>>,
-            4
-        );
-        if lanes.is_none() {
-            return; // no AVX/FMA
-        }
-        let objs: Vec<_> = (0..400)
-            .flat_map(|i| Generator::ALL.map(|g| case(Construction::PlanePlane, g, i)))
-            .map(|c| {
-                let Case::PlanePlane(a, b) = c else {
-                    unreachable!()
-                };
-                (a.object(same).unwrap(), b.object(same).unwrap())
-            })
-            .collect();
-        let cases: Vec<PlanePlaneCase> = objs.iter().map(|(a, b)| (a, b)).collect();
-        batch::testing::assert_run_equals_scalar(
-            &cases,
-            batch_shape,
-            lanes,
-            |&(a, b)| intersect_plane_plane(a, b),
-            |&(a, b)| exact_tiers(a, b),
-        );
-    }
 
     /// The lane kernel decides a lane group of generic pairs of one shape and writes the scalar
     /// answers; a lane of two parallel planes is left to the scalar path.

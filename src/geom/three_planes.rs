@@ -499,6 +499,29 @@ pub fn intersect_three_planes_batch(
     );
 }
 
+/// For `robust`'s tests, which drive it with every robustness generator: the
+/// four-lane (AVX) kernel end to end, whatever the CPU's widest — `batch::run` answers
+/// `cases` as the scalar path does (nothing to run on a CPU without AVX and FMA).
+#[cfg(test)]
+pub(crate) fn assert_four_lane_run_equals_scalar(cases: &[[Plane<f64>; 3]]) {
+    let lanes = lane_kernel!(
+        fast_lanes,
+        [Plane<f64>; 3],
+        Certified<ThreePlanes<Rounded>>,
+        4
+    );
+    if lanes.is_none() {
+        return; // no AVX/FMA
+    }
+    batch::testing::assert_run_equals_scalar(
+        cases,
+        batch_shape,
+        lanes,
+        intersect_three_planes,
+        exact_tiers,
+    );
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -510,38 +533,6 @@ mod tests {
         } else {
             Plane::parametric(v(0.3, 1.1, -2.0), v(1.7, 0.4, 0.2), v(-0.6, 1.9, 0.8)).unwrap()
         }
-    }
-
-    /// The four-lane (AVX) kernel end to end, whatever the CPU's widest: the answers of
-    /// `batch::run` equal the scalar ones on every generator.
-    #[test]
-    fn four_lane_kernel_equals_scalar() {
-        use crate::robust::{case, case::same, Case, Construction, Generator};
-        let lanes = lane_kernel!(
-            fast_lanes,
-            [Plane<f64>; 3],
-            Certified<ThreePlanes<Rounded>>,
-            4
-        );
-        if lanes.is_none() {
-            return; // no AVX/FMA
-        }
-        let cases: Vec<[Plane<f64>; 3]> = (0..400)
-            .flat_map(|i| Generator::ALL.map(|g| case(Construction::ThreePlanes, g, i)))
-            .map(|c| {
-                let Case::ThreePlanes(p) = c else {
-                    unreachable!()
-                };
-                p.map(|q| q.object(same).unwrap())
-            })
-            .collect();
-        batch::testing::assert_run_equals_scalar(
-            &cases,
-            batch_shape,
-            lanes,
-            intersect_three_planes,
-            exact_tiers,
-        );
     }
 
     /// Mixed lanes compute the values of each lane's own shape (what makes the

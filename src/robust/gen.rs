@@ -11,7 +11,7 @@
 //! kept), which preserves every incidence exactly.
 
 use super::case::{Case, Linear2In, LinearIn, PlaneIn, P2, P3};
-use super::rng::Rng;
+use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
 
 /// The constructions of OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8.

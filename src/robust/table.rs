@@ -16,8 +16,8 @@ use super::answer::{grade, grade_certified, rounded_truth, Grade};
 use super::gen::{case, Construction, Generator};
 use super::kettner::{self, KettnerCounts};
 use super::methods;
-use super::rng::Rng;
 use crate::certificate::Arithmetic;
+use crate::num::rng::Rng;
 
 /// Wrong verdicts and coordinates off by more than one ulp.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
