@@ -286,22 +286,37 @@ fn untranslate(jet: &mut [[Interval; 3]], reference: &[f64; 3]) {
     }
 }
 
-#[allow(clippy::type_complexity, clippy::needless_range_loop)]
+/// Per span pair: one `D`-vector per basis pair `(k, l)` (or control point `(i, j)`).
+type Grid<const D: usize> = [[[f64; D]; MAX_N]; MAX_N];
+
+/// The centred Taylor coefficients of the homogeneous patch at the box centre, with
+/// rigorous error bounds, translated by `P_ref ≈ s(m)`; then the jet (in [`ORDERS`]
+/// order) over the box and at the centre, as midpoint–radius enclosures: `(P_ref,
+/// over_box, at_centre)`. `None` when a bound is not finite.
+#[allow(clippy::type_complexity)]
 fn centred_f64<const D: usize>(
     net: &Net,
     spans: &Spans,
     order: usize,
 ) -> Option<([f64; 3], Vec<[MidRad; D]>, Vec<[MidRad; D]>)> {
-    let (a, b) = (&spans.a, &spans.b);
-    let (first_u, first_v) = (spans.first_u, spans.first_v);
-    let (nu, nv) = (a.n, b.n);
-    // The control data Q̃_ij = (RN(w·P), w) or P, and per component the largest |Q̃|:
-    // |Q − Q̃| ≤ ulp(Q̃)/2 ≤ κ_c and |Q| ≤ Q̂_c.
+    let (q, qmax) = control_data::<D>(net, spans);
+    let mut coef = coefficients(&spans.a, &spans.b, &q);
+    let mut err = error_bounds(&spans.a, &spans.b, &qmax);
+    let reference = translate(&mut coef, &mut err, spans.a.n, spans.b.n);
+    let (over_box, at_centre) = jets(&coef, &err, spans, order)?;
+    Some((reference, over_box, at_centre))
+}
+
+/// The control data `Q̃_ij = (RN(w·P), w)` or `P` of the span pair, and per component
+/// the largest `|Q̃|`: `|Q − Q̃| ≤ ulp(Q̃)/2 ≤ κ_c` and `|Q| ≤ Q̂_c` (see [`error_bounds`]).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn control_data<const D: usize>(net: &Net, spans: &Spans) -> (Grid<D>, [f64; D]) {
     let mut q = [[[0.0; D]; MAX_N]; MAX_N];
     let mut qmax = [0.0f64; D];
-    for (i, row) in q.iter_mut().enumerate().take(nv) {
-        for (j, x) in row.iter_mut().enumerate().take(nu) {
-            let k = (first_v + i) * net.cols + first_u + j;
+    for (i, row) in q.iter_mut().enumerate().take(spans.b.n) {
+        for (j, x) in row.iter_mut().enumerate().take(spans.a.n) {
+            let k = (spans.first_v + i) * net.cols + spans.first_u + j;
             let p = net.points[k];
             for c in 0..D {
                 x[c] = match &net.weights {
@@ -313,9 +328,14 @@ fn centred_f64<const D: usize>(
             }
         }
     }
-    let q_hat: [f64; D] = std::array::from_fn(|c| up(qmax[c]));
-    let kappa: [f64; D] = std::array::from_fn(|c| up(qmax[c] * EPS));
-    // Rows R̃_ik = Σ_j ã_kj Q̃_ij, then C̃_kl = Σ_i b̃_li R̃_ik (RN dot products).
+    (q, qmax)
+}
+
+/// Rows `R̃_ik = Σ_j ã_kj Q̃_ij`, then `C̃_kl = Σ_i b̃_li R̃_ik` (RN dot products).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn coefficients<const D: usize>(a: &Basis, b: &Basis, q: &Grid<D>) -> Grid<D> {
+    let (nu, nv) = (a.n, b.n);
     let mut rows = [[[0.0; D]; MAX_N]; MAX_N];
     for i in 0..nv {
         for k in 0..nu {
@@ -340,10 +360,18 @@ fn centred_f64<const D: usize>(
             }
         }
     }
-    // Error bounds E_kl ≥ |C_kl − C̃_kl|. With R_ik the exact row sums:
-    //   |R_ik − R̃_ik| ≤ Σ_j α_kj|Q_ij| + Σ_j |ã_kj| κ + γ_n Σ_j |ã_kj||Q̃_ij| + n·η =: ρ_k
-    //   |R_ik| ≤ Â_k Q̂ =: R_k,   |R̃_ik| ≤ R_k + ρ_k =: R̃_k,
-    //   |C_kl − C̃_kl| ≤ Σ_i β_li |R_ik| + Σ_i |b̃_li| ρ_k + γ_n Σ_i |b̃_li||R̃_ik| + n·η.
+    coef
+}
+
+/// Error bounds `E_kl ≥ |C_kl − C̃_kl|` of [`coefficients`]. With `R_ik` the exact row sums:
+///   `|R_ik − R̃_ik| ≤ Σ_j α_kj|Q_ij| + Σ_j |ã_kj| κ + γ_n Σ_j |ã_kj||Q̃_ij| + n·η =: ρ_k`,
+///   `|R_ik| ≤ Â_k Q̂ =: R_k`, `|R̃_ik| ≤ R_k + ρ_k =: R̃_k`,
+///   `|C_kl − C̃_kl| ≤ Σ_i β_li |R_ik| + Σ_i |b̃_li| ρ_k + γ_n Σ_i |b̃_li||R̃_ik| + n·η`.
+#[inline(always)]
+fn error_bounds<const D: usize>(a: &Basis, b: &Basis, qmax: &[f64; D]) -> Grid<D> {
+    let (nu, nv) = (a.n, b.n);
+    let q_hat: [f64; D] = std::array::from_fn(|c| up(qmax[c]));
+    let kappa: [f64; D] = std::array::from_fn(|c| up(qmax[c] * EPS));
     let mut err = [[[0.0; D]; MAX_N]; MAX_N];
     for k in 0..nu {
         for c in 0..D {
@@ -355,16 +383,27 @@ fn centred_f64<const D: usize>(
             );
             let r_max = up(a.hat[k] * q_hat[c]);
             let r_tilde = up(r_max + rho);
-            for l in 0..nv {
-                err[k][l][c] = inflate(
+            for (l, e) in err[k].iter_mut().enumerate().take(nv) {
+                e[c] = inflate(
                     b.rad[l] * r_max + b.abs[l] * rho + b.gamma_abs[l] * r_tilde + nv as f64 * ETA,
                 );
             }
         }
     }
-    // Translate by P_ref ≈ s(m), as the generic code does: C' = C^A − P_ref·C^W
-    // (rational) or C'_00 = C_00 − P_ref (polynomial). Error of each new coefficient:
-    // the old ones, |P|·E^W, and the two roundings (each ≤ 2⁻⁵²|result| + η).
+    err
+}
+
+/// Translate by `P_ref ≈ s(m)`, as the generic code does: `C' = C^A − P_ref·C^W`
+/// (rational) or `C'_00 = C_00 − P_ref` (polynomial). Error of each new coefficient:
+/// the old ones, `|P|·E^W`, and the two roundings (each `≤ 2⁻⁵²|result| + η`).
+/// Returns `P_ref`.
+#[inline(always)]
+fn translate<const D: usize>(
+    coef: &mut Grid<D>,
+    err: &mut Grid<D>,
+    nu: usize,
+    nv: usize,
+) -> [f64; 3] {
     let reference: [f64; 3] = std::array::from_fn(|c| {
         let x = if D == 4 {
             coef[0][0][c] / coef[0][0][3]
@@ -402,7 +441,23 @@ fn centred_f64<const D: usize>(
             coef[0][0][c] = t;
         }
     }
-    // |C_kl| ≤ T_kl.
+    reference
+}
+
+/// The jet entries up to `order` over the box and at the centre, from the coefficients
+/// `C̃` and their errors `E`: `∂_u^a ∂_v^b H(m + δ) = Σ_{k≥a, l≥b} k!/(k−a)! l!/(l−b)!
+/// C_kl δ_u^{k−a} δ_v^{l−b}`, midpoint `a!b!·C̃_ab` (exact: `a!b! ∈ {1, 2}`), radius
+/// `a!b!·E_ab` plus the other terms bounded by their magnitudes `|C_kl| ≤ T_kl` over
+/// `|δ_u| ≤ r_u`, `|δ_v| ≤ r_v`. `None` when a bound is not finite.
+#[allow(clippy::type_complexity, clippy::needless_range_loop)]
+#[inline(always)]
+fn jets<const D: usize>(
+    coef: &Grid<D>,
+    err: &Grid<D>,
+    spans: &Spans,
+    order: usize,
+) -> Option<(Vec<[MidRad; D]>, Vec<[MidRad; D]>)> {
+    let (nu, nv) = (spans.a.n, spans.b.n);
     let mut mag = [[[0.0; D]; MAX_N]; MAX_N];
     for k in 0..nu {
         for l in 0..nv {
@@ -411,9 +466,6 @@ fn centred_f64<const D: usize>(
             }
         }
     }
-    // ∂_u^a ∂_v^b H(m + δ) = Σ_{k≥a, l≥b} k!/(k−a)! l!/(l−b)! C_kl δ_u^{k−a} δ_v^{l−b}:
-    // midpoint a!b!·C̃_ab (exact: a!b! ∈ {1, 2}), radius a!b!·E_ab plus the other terms
-    // bounded by their magnitudes over |δ_u| ≤ r_u, |δ_v| ≤ r_v.
     let fu = derivative_factors(spans.r_u, nu);
     let fv = derivative_factors(spans.r_v, nv);
     let len = jet_len(order);
@@ -455,7 +507,7 @@ fn centred_f64<const D: usize>(
         over_box.push(boxed);
         at_centre.push(centre);
     }
-    Some((reference, over_box, at_centre))
+    Some((over_box, at_centre))
 }
 
 #[cfg(test)]
