@@ -204,11 +204,7 @@ impl Ledger {
             value,
             status,
             complete,
-            arithmetic: if bits > 53 {
-                Arithmetic::Mpfr
-            } else {
-                Arithmetic::Interval
-            },
+            arithmetic: Arithmetic::of_interval_bits(bits),
             bits,
             reason,
             perturbation,
