@@ -289,12 +289,7 @@ fn finish(sturm: &Sturm, w: Work) -> Isolated {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn ip(c: &[i64]) -> IntPoly {
-        IntPoly {
-            c: c.iter().map(|&x| Integer::from(x)).collect(),
-        }
-    }
+    use crate::certify::univariate::int_poly::small_poly as ip;
 
     #[test]
     fn isolates_and_finds_split_point_roots() {
