@@ -56,6 +56,16 @@ pub enum Arithmetic {
 }
 
 impl Arithmetic {
+    /// The interval arithmetic of a proof at `bits` bits of precision: f64 intervals at
+    /// 53 bits (or fewer), MPFR intervals above (CERTIFICATION.md "Escalation").
+    pub fn of_interval_bits(bits: u32) -> Arithmetic {
+        if bits > 53 {
+            Arithmetic::Mpfr
+        } else {
+            Arithmetic::Interval
+        }
+    }
+
     /// The name used in JSON.
     pub fn as_str(self) -> &'static str {
         match self {

@@ -42,6 +42,7 @@ pub mod deflate;
 pub mod dual;
 pub mod guarded;
 pub mod krawczyk;
+mod ledger;
 pub mod level;
 pub mod linalg;
 pub mod newton;

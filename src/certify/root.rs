@@ -184,15 +184,10 @@ fn root_of<I: CertInterval>(v: &VerifiedRoot<I>, bits: u32) -> Root {
 }
 
 fn verified(root: Root) -> Certified<Root> {
-    let arithmetic = if root.bits > 53 {
-        crate::certificate::Arithmetic::Mpfr
-    } else {
-        crate::certificate::Arithmetic::Interval
-    };
     Certified {
         status: root.status,
         complete: false,
-        arithmetic,
+        arithmetic: crate::certificate::Arithmetic::of_interval_bits(root.bits),
         bits: root.bits,
         reason: None,
         perturbation: root.perturbation,

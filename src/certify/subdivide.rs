@@ -7,8 +7,8 @@
 
 use super::boxes::{self, IBox};
 use super::krawczyk::{excluded_by_image, image, krawczyk, tighten, Krawczyk, VerifiedRoot};
+use super::ledger::Ledger;
 use super::level::CertInterval;
-use super::solve::Ledger;
 use super::system::System;
 use crate::num::IntervalLike;
 
@@ -169,13 +169,7 @@ pub fn clusters<I: IntervalLike>(bxs: Vec<IBox<I>>) -> Vec<Vec<IBox<I>>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::Interval;
-
-    fn b(s: &[(f64, f64)]) -> IBox<Interval> {
-        s.iter()
-            .map(|&(l, h)| Interval::from_bounds(l, h))
-            .collect()
-    }
+    use crate::certify::boxes::test_box as b;
 
     #[test]
     fn touching_boxes_form_one_cluster() {

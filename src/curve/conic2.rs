@@ -5,9 +5,9 @@
 //! polynomial, so interval arguments give enclosures) and the exact classification by
 //! the invariants (1.19), decided in rationals.
 
+use super::implicit::{Implicit, ImplicitJet};
 use crate::error::{require_finite_all, GeomError};
 use crate::num::Real;
-use crate::surface::{Implicit, ImplicitJet};
 use rug::Rational;
 use std::cmp::Ordering;
 

@@ -11,8 +11,6 @@
 //! `Z = a/|a|`, `X = w/|w|`, `Y = (a × w)/(|a||w|)`,
 //! so an interval evaluation encloses the exact orthonormal frame of the double inputs.
 
-use std::any::TypeId;
-
 use crate::error::{require_finite_all, GeomError};
 use crate::geom::objects::Coord;
 use crate::num::vector::{add, add_scaled, cross, dot, lift, norm_sq, scale, sub};
@@ -118,7 +116,7 @@ impl Frame {
     /// an enclosing [`Real`] operation); for f64 it is the f64 evaluation of the same
     /// formula, computed once.
     pub fn axes<T: Real>(&self, like: &T) -> [[T; 3]; 3] {
-        if TypeId::of::<T>() == TypeId::of::<f64>() {
+        if T::IS_F64 {
             return self.cached.map(|a| lift(like, &a));
         }
         self.compute_axes(like)

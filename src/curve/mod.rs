@@ -26,6 +26,7 @@ pub mod derived;
 pub mod diffgeo;
 pub mod domain;
 pub mod frame;
+pub mod implicit;
 pub mod lines;
 pub mod nurbs;
 pub mod polyline;

@@ -5,7 +5,7 @@
 //! a zero normal, an inverted range, a degenerate segment and non-finite numbers are
 //! typed errors naming the field.
 
-use nalgebra::{Vector2, Vector3};
+use nalgebra::{SVector, Vector3};
 use rug::Rational;
 use std::fmt::Debug;
 
@@ -112,25 +112,28 @@ fn check_range<T: Coord>(range: &Option<[T; 2]>) -> Result<(), GeomError> {
     Ok(())
 }
 
-/// A line `c(t) = origin + t·dir` (OPERATIONS.md §3.1), optionally restricted to
-/// `t ∈ range` (closed).
+/// A line `c(t) = origin + t·dir` in `D` dimensions (OPERATIONS.md §3.1; 3D unless
+/// said otherwise, [`Line2`] in the plane), optionally restricted to `t ∈ range` (closed).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Line<T: Coord> {
-    origin: Vector3<T>,
-    dir: Vector3<T>,
+pub struct Line<T: Coord, const D: usize = 3> {
+    origin: SVector<T, D>,
+    dir: SVector<T, D>,
     range: Option<[T; 2]>,
 }
 
-impl<T: Coord> Line<T> {
+/// A 2D line `c(t) = origin + t·dir`, optionally restricted to `t ∈ range`.
+pub type Line2<T> = Line<T, 2>;
+
+impl<T: Coord, const D: usize> Line<T, D> {
     /// An unbounded line. Errors: `non_finite` (`origin[i]`, `dir[i]`), `zero_direction` (`dir`).
-    pub fn new(origin: Vector3<T>, dir: Vector3<T>) -> Result<Self, GeomError> {
+    pub fn new(origin: SVector<T, D>, dir: SVector<T, D>) -> Result<Self, GeomError> {
         Self::with_range(origin, dir, None)
     }
     /// A line restricted to `t ∈ [range[0], range[1]]`; also `empty_domain` (`range`)
     /// when `range[0] > range[1]`.
     pub fn with_range(
-        origin: Vector3<T>,
-        dir: Vector3<T>,
+        origin: SVector<T, D>,
+        dir: SVector<T, D>,
         range: Option<[T; 2]>,
     ) -> Result<Self, GeomError> {
         check_vec("origin", origin.as_slice())?;
@@ -139,10 +142,10 @@ impl<T: Coord> Line<T> {
         check_range(&range)?;
         Ok(Line { origin, dir, range })
     }
-    pub fn origin(&self) -> &Vector3<T> {
+    pub fn origin(&self) -> &SVector<T, D> {
         &self.origin
     }
-    pub fn dir(&self) -> &Vector3<T> {
+    pub fn dir(&self) -> &SVector<T, D> {
         &self.dir
     }
     pub fn range(&self) -> Option<&[T; 2]> {
@@ -150,16 +153,20 @@ impl<T: Coord> Line<T> {
     }
 }
 
-/// A segment `c(t) = (1 − t)·a + t·b`, `t ∈ [0, 1]`.
+/// A segment `c(t) = (1 − t)·a + t·b`, `t ∈ [0, 1]`, in `D` dimensions (3D unless said
+/// otherwise, [`Segment2`] in the plane).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Segment<T: Coord> {
-    a: Vector3<T>,
-    b: Vector3<T>,
+pub struct Segment<T: Coord, const D: usize = 3> {
+    a: SVector<T, D>,
+    b: SVector<T, D>,
 }
 
-impl<T: Coord> Segment<T> {
+/// A 2D segment `(1 − t)·a + t·b`, `t ∈ [0, 1]`.
+pub type Segment2<T> = Segment<T, 2>;
+
+impl<T: Coord, const D: usize> Segment<T, D> {
     /// Errors: `non_finite` (`a[i]`, `b[i]`), `zero_direction` (`b`) when `a == b`.
-    pub fn new(a: Vector3<T>, b: Vector3<T>) -> Result<Self, GeomError> {
+    pub fn new(a: SVector<T, D>, b: SVector<T, D>) -> Result<Self, GeomError> {
         check_vec("a", a.as_slice())?;
         check_vec("b", b.as_slice())?;
         if a == b {
@@ -167,10 +174,10 @@ impl<T: Coord> Segment<T> {
         }
         Ok(Segment { a, b })
     }
-    pub fn a(&self) -> &Vector3<T> {
+    pub fn a(&self) -> &SVector<T, D> {
         &self.a
     }
-    pub fn b(&self) -> &Vector3<T> {
+    pub fn b(&self) -> &SVector<T, D> {
         &self.b
     }
 }
@@ -214,66 +221,5 @@ impl<T: Coord> Plane<T> {
             });
         }
         Ok(Plane::Implicit { normal, d })
-    }
-}
-
-/// A 2D line `c(t) = origin + t·dir`, optionally restricted to `t ∈ range`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Line2<T: Coord> {
-    origin: Vector2<T>,
-    dir: Vector2<T>,
-    range: Option<[T; 2]>,
-}
-
-impl<T: Coord> Line2<T> {
-    /// Errors as [`Line::new`].
-    pub fn new(origin: Vector2<T>, dir: Vector2<T>) -> Result<Self, GeomError> {
-        Self::with_range(origin, dir, None)
-    }
-    /// Errors as [`Line::with_range`].
-    pub fn with_range(
-        origin: Vector2<T>,
-        dir: Vector2<T>,
-        range: Option<[T; 2]>,
-    ) -> Result<Self, GeomError> {
-        check_vec("origin", origin.as_slice())?;
-        check_vec("dir", dir.as_slice())?;
-        nonzero("dir", dir.as_slice())?;
-        check_range(&range)?;
-        Ok(Line2 { origin, dir, range })
-    }
-    pub fn origin(&self) -> &Vector2<T> {
-        &self.origin
-    }
-    pub fn dir(&self) -> &Vector2<T> {
-        &self.dir
-    }
-    pub fn range(&self) -> Option<&[T; 2]> {
-        self.range.as_ref()
-    }
-}
-
-/// A 2D segment `(1 − t)·a + t·b`, `t ∈ [0, 1]`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Segment2<T: Coord> {
-    a: Vector2<T>,
-    b: Vector2<T>,
-}
-
-impl<T: Coord> Segment2<T> {
-    /// Errors as [`Segment::new`].
-    pub fn new(a: Vector2<T>, b: Vector2<T>) -> Result<Self, GeomError> {
-        check_vec("a", a.as_slice())?;
-        check_vec("b", b.as_slice())?;
-        if a == b {
-            return Err(GeomError::ZeroDirection { field: "b".into() });
-        }
-        Ok(Segment2 { a, b })
-    }
-    pub fn a(&self) -> &Vector2<T> {
-        &self.a
-    }
-    pub fn b(&self) -> &Vector2<T> {
-        &self.b
     }
 }
