@@ -387,3 +387,31 @@ fn scaled_configurations_keep_their_answers() {
         }
     }
 }
+
+/// Segments of a mesh sharing a vertex (full 53-bit coordinates): the vertex, at
+/// parameters exactly 0 or 1 — outputs that are doubles, which the filter leaves to
+/// the exact tiers.
+#[test]
+fn segments_sharing_a_vertex() {
+    let mut rng = geocert::robust::rng::Rng::new(5);
+    for k in 0..300 {
+        let mut v = || [rng.generic(), rng.generic(), rng.generic()];
+        let (p, a, b) = (v(), v(), v());
+        let vertex = || Vector3::from(p).map(q);
+        let cases = [
+            (seg(p, a), seg(p, b), (0, 0)),
+            (seg(p, a), seg(b, p), (0, 1)),
+            (seg(a, p), seg(b, p), (1, 1)),
+        ];
+        for (s1, s2, (t1, t2)) in cases {
+            let x = both(&s1, &s2);
+            let expected = point(vertex(), Rational::from(t1), Rational::from(t2));
+            assert_eq!(x, LineLine::Point(expected), "{k}");
+            let c = intersect_line_line(s1.linear(), s2.linear());
+            let LineLine::Point(r) = c.value else {
+                panic!()
+            };
+            assert!(r.point.iter().chain([&r.t1, &r.t2]).all(|x| x.is_exact()));
+        }
+    }
+}

@@ -30,7 +30,8 @@ mod procedure;
 use nalgebra::{Scalar, Vector2, Vector3};
 use rug::Rational;
 
-use self::procedure::{carrier, core, domain};
+use self::filter::{Filtered, Tier};
+use self::procedure::{carrier, core, crossing, domain, normal_component};
 use super::data::Linear;
 use super::exact_tier::{ring_tier, ExactRing, Rounder, SmallInteger, WideInteger};
 use crate::certificate::Certified;
@@ -169,9 +170,61 @@ fn certified<M: crate::num::dd::ProductMode>(
     b: Linear<f64>,
 ) -> Certified<LineLine<Rounded>> {
     match filter::fast::<M>(a, b) {
-        Some(r) => r,
-        None => exact_tiers(a, b),
+        Filtered::Done(r) => r,
+        Filtered::Crossing { k, from } => crossing_tiers(a, b, k, from),
+        Filtered::Undecided => exact_tiers(a, b),
     }
+}
+
+/// Coplanar carriers, `n_k ≠ 0`, both proven: the crossing formulas alone in the exact
+/// tiers from `from` on (rationals always answer).
+#[cold]
+#[inline(never)]
+fn crossing_tiers(
+    a: Linear<f64>,
+    b: Linear<f64>,
+    k: usize,
+    from: Tier,
+) -> Certified<LineLine<Rounded>> {
+    let small = || crossing_in::<SmallInteger>(a, b, k);
+    let wide = || crossing_in::<WideInteger>(a, b, k);
+    let expansion = || crossing_in::<Expansion>(a, b, k);
+    (from <= Tier::Small)
+        .then(small)
+        .flatten()
+        .or_else(|| (from <= Tier::Wide).then(wide).flatten())
+        .or_else(|| (from <= Tier::Expansion).then(expansion).flatten())
+        .unwrap_or_else(|| {
+            let mut r = Rounder::default();
+            let value = crossing_answer::<Rational>(a, b, k).map(|q| r.round(q));
+            r.certify(value)
+        })
+}
+
+/// [`crossing_tiers`] in the ring `E`: `None` when `E` lost exactness.
+#[inline(always)]
+fn crossing_in<E: ExactRing>(
+    a: Linear<f64>,
+    b: Linear<f64>,
+    k: usize,
+) -> Option<Certified<LineLine<Rounded>>> {
+    ring_tier::<E, _>(|r| crossing_answer::<Ratio<E>>(a, b, k).map(|q| r.round(q)))
+}
+
+/// The crossing answer of coplanar carriers on the axis `k` (`n_k ≠ 0`), in `R`.
+#[inline(always)]
+fn crossing_answer<R: crate::num::ring::Field>(
+    a: Linear<f64>,
+    b: Linear<f64>,
+    k: usize,
+) -> LineLine<R>
+where
+    f64: super::data::Lift<R>,
+{
+    let (x, y) = (carrier(a), carrier(b));
+    let w = crate::num::ring::sub3(&y.o, &x.o);
+    let den = normal_component(&x, &y, k);
+    crossing(&x, &domain(a), &y, &domain(b), &w, den, k)
 }
 
 /// The exact tiers in order of cost: 128-bit integers, 768-bit integers, expansions,

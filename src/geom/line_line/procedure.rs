@@ -101,10 +101,19 @@ pub(crate) fn crossing_terms<R: Ring>(
     }
 }
 
-/// `w·n = det(o₂ − o₁, d₁, d₂)`: zero exactly when the carriers are coplanar.
-#[inline(always)]
+/// `w·n = det(o₂ − o₁, d₁, d₂)`: zero exactly when the carriers are coplanar (the
+/// formula the filter evaluates, for its constant's derivation).
+#[cfg(test)]
 pub(crate) fn coplanarity<R: Ring>(x: &Carrier<R>, y: &Carrier<R>) -> R {
     dot3(&sub3(&y.o, &x.o), &cross3(&x.d, &y.d))
+}
+
+/// The three terms `w_i n_i` of [`coplanarity`] (summed in the same order, they give
+/// the same value).
+#[inline(always)]
+pub(crate) fn coplanarity_terms<R: Ring>(x: &Carrier<R>, y: &Carrier<R>) -> V3<R> {
+    let (w, n) = (sub3(&y.o, &x.o), cross3(&x.d, &y.d));
+    each!(i in [0, 1, 2] => w[i].times(&n[i]))
 }
 
 /// The axis of the largest `|n_k|` (the first on ties), `None` when `n = 0`.
@@ -144,7 +153,28 @@ pub(crate) fn core<R: Field>(
     if !dot3(&w, &n).is_zero() {
         return LineLine::Empty(LineLineEmpty::Skew);
     }
-    let tm = crossing_terms(x, y, &w, n[k].clone(), k);
+    crossing(x, dx, y, dy, &w, n[k].clone(), k)
+}
+
+/// `(d₁ × d₂)_k`.
+#[inline(always)]
+pub(crate) fn normal_component<R: Ring>(x: &Carrier<R>, y: &Carrier<R>, k: usize) -> R {
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    x.d[i].times(&y.d[j]).minus(&x.d[j].times(&y.d[i]))
+}
+
+/// Coplanar carriers with `den = n_k ≠ 0`: the crossing point, inside both domains
+/// or not.
+pub(crate) fn crossing<R: Field>(
+    x: &Carrier<R>,
+    dx: &Domain<R>,
+    y: &Carrier<R>,
+    dy: &Domain<R>,
+    w: &V3<R>,
+    den: R,
+    k: usize,
+) -> LineLine<R> {
+    let tm = crossing_terms(x, y, w, den, k);
     let p = LineLinePoint {
         point: Vector3::from(tm.pnum.map(|q| q.divide(&tm.den))),
         t1: tm.t1n.divide(&tm.den),
