@@ -118,6 +118,7 @@ fn largest<M: ProductMode>(n: &V3<Dd<M>>) -> usize {
 }
 
 /// What the filter tier leaves to the exact tiers.
+#[allow(clippy::large_enum_variant)] // returned once, inlined: boxing would allocate
 pub(super) enum Filtered {
     /// Decided: by the filter alone, or with the coplanarity decided exactly.
     Done(Certified<LineLine<Rounded>>),
@@ -275,8 +276,8 @@ mod tests {
                 let y = Carrier { o: [i; 3], d: *d2 };
                 let n = cross3(&x.d, &y.d);
                 let w = sub3(&y.o, &x.o);
-                for k in 0..3 {
-                    let tm = crossing_terms(&x, &y, &w, n[k], k);
+                for (k, &nk) in n.iter().enumerate() {
+                    let tm = crossing_terms(&x, &y, &w, nk, k);
                     worst[0] = worst[0].max(tm.den);
                     worst[2] = worst[2].max(tm.t1n).max(tm.t2n);
                     for p in tm.pnum {
