@@ -204,12 +204,15 @@ struct Ref {
     path: Vec<String>,
 }
 
+/// A module's `use` bindings: name → (absolute path, whether the `use` is `pub`).
+type Bindings = BTreeMap<String, (Vec<String>, bool)>;
+
 /// The crate's modules, the names its `use` declarations bind, and the paths it names.
 struct Crate {
     modules: BTreeSet<Vec<String>>,
     /// Per module: a name bound by `use` → the absolute path it stands for, and whether
     /// the `use` is `pub` (visible outside the module; a private one only inside).
-    bindings: BTreeMap<Vec<String>, BTreeMap<String, (Vec<String>, bool)>>,
+    bindings: BTreeMap<Vec<String>, Bindings>,
     refs: Vec<Ref>,
 }
 

@@ -5,6 +5,7 @@
 //! break one rule of docs/FORMAT.md are rejected — so the schema is neither looser nor
 //! stricter than the output.
 
+use std::f64::consts::FRAC_PI_2;
 use std::io::Write;
 use std::process::{Command, Stdio};
 
@@ -60,11 +61,13 @@ fn every_expected_answer_fits_the_schema() {
 fn every_verify_record_of_the_corpus_claims_fits_the_schema() {
     let claims: Vec<String> = lines(CASES)
         .into_iter()
-        .filter(|l| {
-            serde_json::from_str::<Value>(l).is_ok_and(|v| v.get("claim").is_some())
-        })
+        .filter(|l| serde_json::from_str::<Value>(l).is_ok_and(|v| v.get("claim").is_some()))
         .collect();
-    assert!(claims.len() > 100, "the corpus has claims: {}", claims.len());
+    assert!(
+        claims.len() > 100,
+        "the corpus has claims: {}",
+        claims.len()
+    );
     let mut child = Command::new(env!("CARGO_BIN_EXE_geocert"))
         .args(["verify", "-"])
         .stdin(Stdio::piped())
@@ -76,7 +79,10 @@ fn every_verify_record_of_the_corpus_claims_fits_the_schema() {
     let mut stdin = child.stdin.take().expect("stdin");
     let writer = std::thread::spawn(move || stdin.write_all(input.as_bytes()));
     let out = child.wait_with_output().expect("geocert verify finishes");
-    writer.join().expect("writer thread").expect("writes the cases");
+    writer
+        .join()
+        .expect("writer thread")
+        .expect("writes the cases");
     let records: Vec<String> = String::from_utf8(out.stdout)
         .expect("UTF-8")
         .lines()
@@ -123,48 +129,134 @@ fn records_breaking_a_rule_are_rejected() {
     let undecided = sample(&expected, |r| r["status"] == "undecided");
     let line = sample(&expected, |r| r["kind"] == "line");
     for r in [&points, &empty, &error, &singular, &undecided, &line] {
-        assert!(schemas.validate(r, index).is_ok(), "the originals are valid: {r}");
+        assert!(
+            schemas.validate(r, index).is_ok(),
+            "the originals are valid: {r}"
+        );
     }
     let p0 = |r: &mut Value| -> Value { r["points"][0].take() };
     let broken: Vec<(&str, Value)> = vec![
-        ("no format", mutated(&points, |r| drop(r.as_object_mut().unwrap().remove("format")))),
+        (
+            "no format",
+            mutated(&points, |r| {
+                drop(r.as_object_mut().unwrap().remove("format"))
+            }),
+        ),
         ("format 2", mutated(&points, |r| r["format"] = json!(2))),
-        ("an unknown field", mutated(&points, |r| r["colour"] = json!("red"))),
-        ("an unknown status", mutated(&points, |r| r["status"] = json!("proven"))),
-        ("an unknown kind", mutated(&points, |r| r["kind"] = json!("blob"))),
-        ("arithmetic float", mutated(&points, |r| r["arithmetic"] = json!("float"))),
+        (
+            "an unknown field",
+            mutated(&points, |r| r["colour"] = json!("red")),
+        ),
+        (
+            "an unknown status",
+            mutated(&points, |r| r["status"] = json!("proven")),
+        ),
+        (
+            "an unknown kind",
+            mutated(&points, |r| r["kind"] = json!("blob")),
+        ),
+        (
+            "arithmetic float",
+            mutated(&points, |r| r["arithmetic"] = json!("float")),
+        ),
         ("negative bits", mutated(&points, |r| r["bits"] = json!(-1))),
-        ("no complete", mutated(&points, |r| drop(r.as_object_mut().unwrap().remove("complete")))),
-        ("kind points, no point", mutated(&points, |r| r["points"] = json!([]))),
+        (
+            "no complete",
+            mutated(&points, |r| {
+                drop(r.as_object_mut().unwrap().remove("complete"))
+            }),
+        ),
+        (
+            "kind points, no point",
+            mutated(&points, |r| r["points"] = json!([])),
+        ),
         ("kind empty with a point", {
             let mut r = empty.clone();
             r["points"] = json!([p0(&mut points.clone())]);
             r
         }),
-        ("kind empty without points", mutated(&empty, |r| drop(r.as_object_mut().unwrap().remove("points")))),
-        ("kind line with points", mutated(&points, |r| r["kind"] = json!("line"))),
-        ("kind line without line", mutated(&line, |r| drop(r.as_object_mut().unwrap().remove("line")))),
-        ("a point without box", mutated(&points, |r| drop(r["points"][0].as_object_mut().unwrap().remove("box")))),
-        ("a point with an unknown field", mutated(&points, |r| r["points"][0]["weight"] = json!(1))),
-        ("a bound with one end", mutated(&points, |r| r["points"][0]["box"][0] = json!([0.5]))),
-        ("multiplicity 0", mutated(&points, |r| r["points"][0]["multiplicity"] = json!(0))),
-        ("an exact value that is not a rational", mutated(&points, |r| {
-            r["points"][0]["exact"] = json!({"xyz": ["1/3", "0.5", "0"]})
-        })),
-        ("verified_singular without perturbation", mutated(&singular, |r| {
-            drop(r.as_object_mut().unwrap().remove("perturbation"))
-        })),
-        ("undecided without reason", mutated(&undecided, |r| drop(r.as_object_mut().unwrap().remove("reason")))),
-        ("an error record with a kind", mutated(&error, |r| r["kind"] = json!("points"))),
-        ("an unknown error kind", mutated(&error, |r| r["error"]["kind"] = json!("oops"))),
-        ("an error without field", mutated(&error, |r| drop(r["error"].as_object_mut().unwrap().remove("field")))),
-        ("claims without missed", mutated(&points, |r| {
-            r["claims"] = json!([{"item": "points[0]", "verdict": "confirmed", "status": "exact"}])
-        })),
-        ("a refutation resting on nothing", mutated(&points, |r| {
-            r["claims"] = json!([{"item": "points[0]", "verdict": "refuted", "status": "undecided"}]);
-            r["missed"] = json!([]);
-        })),
+        (
+            "kind empty without points",
+            mutated(&empty, |r| {
+                drop(r.as_object_mut().unwrap().remove("points"))
+            }),
+        ),
+        (
+            "kind line with points",
+            mutated(&points, |r| r["kind"] = json!("line")),
+        ),
+        (
+            "kind line without line",
+            mutated(&line, |r| drop(r.as_object_mut().unwrap().remove("line"))),
+        ),
+        (
+            "a point without box",
+            mutated(&points, |r| {
+                drop(r["points"][0].as_object_mut().unwrap().remove("box"))
+            }),
+        ),
+        (
+            "a point with an unknown field",
+            mutated(&points, |r| r["points"][0]["weight"] = json!(1)),
+        ),
+        (
+            "a bound with one end",
+            mutated(&points, |r| r["points"][0]["box"][0] = json!([0.5])),
+        ),
+        (
+            "multiplicity 0",
+            mutated(&points, |r| r["points"][0]["multiplicity"] = json!(0)),
+        ),
+        (
+            "an exact value that is not a rational",
+            mutated(&points, |r| {
+                r["points"][0]["exact"] = json!({"xyz": ["1/3", "0.5", "0"]})
+            }),
+        ),
+        (
+            "verified_singular without perturbation",
+            mutated(&singular, |r| {
+                drop(r.as_object_mut().unwrap().remove("perturbation"))
+            }),
+        ),
+        (
+            "undecided without reason",
+            mutated(&undecided, |r| {
+                drop(r.as_object_mut().unwrap().remove("reason"))
+            }),
+        ),
+        (
+            "an error record with a kind",
+            mutated(&error, |r| r["kind"] = json!("points")),
+        ),
+        (
+            "an unknown error kind",
+            mutated(&error, |r| r["error"]["kind"] = json!("oops")),
+        ),
+        (
+            "an error without field",
+            mutated(&error, |r| {
+                drop(r["error"].as_object_mut().unwrap().remove("field"))
+            }),
+        ),
+        (
+            "claims without missed",
+            mutated(
+                &points,
+                |r| {
+                    r["claims"] =
+                        json!([{"item": "points[0]", "verdict": "confirmed", "status": "exact"}])
+                },
+            ),
+        ),
+        (
+            "a refutation resting on nothing",
+            mutated(&points, |r| {
+                r["claims"] =
+                    json!([{"item": "points[0]", "verdict": "refuted", "status": "undecided"}]);
+                r["missed"] = json!([]);
+            }),
+        ),
     ];
     for (what, record) in &broken {
         assert!(
@@ -182,8 +274,8 @@ fn curve_records_that_are_coming_fit_the_schema() {
         "bits": 53, "arithmetic": "interval",
         "curves": [{
             "closed": true,
-            "points": [{"xyz": [1.0, 0.0, 0.0], "params": [[0.0, 0.0], [0.0, 1.5707963267948966]]},
-                       {"xyz": [0.0, 1.0, 0.0], "params": [[1.5707963267948966, 0.0], [1.5707963267948966, 1.5707963267948966]]}],
+            "points": [{"xyz": [1.0, 0.0, 0.0], "params": [[0.0, 0.0], [0.0, FRAC_PI_2]]},
+                       {"xyz": [0.0, 1.0, 0.0], "params": [[FRAC_PI_2, 0.0], [FRAC_PI_2, FRAC_PI_2]]}],
             "singular_points": [{"xyz": [0.0, 0.0, 1.0], "box": [[-1e-15, 1e-15], [-1e-15, 1e-15], [1.0, 1.0]]}]
         }]
     });
@@ -193,9 +285,16 @@ fn curve_records_that_are_coming_fit_the_schema() {
     });
     assert!(schemas.validate(&without_closed, index).is_err());
     let singular_without_box = mutated(&curves, |r| {
-        drop(r["curves"][0]["singular_points"][0].as_object_mut().unwrap().remove("box"))
+        drop(
+            r["curves"][0]["singular_points"][0]
+                .as_object_mut()
+                .unwrap()
+                .remove("box"),
+        )
     });
     assert!(schemas.validate(&singular_without_box, index).is_err());
-    let no_curves = mutated(&curves, |r| drop(r.as_object_mut().unwrap().remove("curves")));
+    let no_curves = mutated(&curves, |r| {
+        drop(r.as_object_mut().unwrap().remove("curves"))
+    });
     assert!(schemas.validate(&no_curves, index).is_err());
 }

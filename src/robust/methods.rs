@@ -254,6 +254,8 @@ fn epick_unguarded(case: &Case) -> Answer<f64> {
                 kind: Kind::Segment,
                 coords: source.iter().chain(&target).copied().collect(),
             },
+            // (no construction of the table gives a ray)
+            Ok(Intersection::Ray { .. }) => Answer::kind(Kind::Error),
             Ok(Intersection::Plane(_)) => Answer::kind(Kind::Plane),
             Err(_) => Answer::kind(Kind::Error),
         }

@@ -11,6 +11,7 @@ pub mod answer;
 pub mod case;
 pub mod gen;
 pub mod kettner;
+pub mod line_line;
 pub mod methods;
 pub mod table;
 

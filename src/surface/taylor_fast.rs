@@ -368,6 +368,8 @@ fn coefficients<const D: usize>(a: &Basis, b: &Basis, q: &Grid<D>) -> Grid<D> {
 ///   `|R_ik| ≤ Â_k Q̂ =: R_k`, `|R̃_ik| ≤ R_k + ρ_k =: R̃_k`,
 ///   `|C_kl − C̃_kl| ≤ Σ_i β_li |R_ik| + Σ_i |b̃_li| ρ_k + γ_n Σ_i |b̃_li||R̃_ik| + n·η`.
 #[inline(always)]
+// `k` indexes the basis arrays and the grid together.
+#[allow(clippy::needless_range_loop)]
 fn error_bounds<const D: usize>(a: &Basis, b: &Basis, qmax: &[f64; D]) -> Grid<D> {
     let (nu, nv) = (a.n, b.n);
     let q_hat: [f64; D] = std::array::from_fn(|c| up(qmax[c]));
