@@ -1,6 +1,6 @@
 //! Reading a case file as a stream (spec/CASES.md: a JSON array, or JSON Lines), so
 //! that memory stays flat whatever the file's size: [`CaseStream`] cuts the input
-//! into [`Chunk`]s, one case each, without parsing them; [`Chunk::read`] parses one
+//! into [`Chunk`]s, one case each, without parsing them; [`super::read_chunk`] parses one
 //! (on any thread). One bad case costs that case only:
 //!
 //! - JSON Lines: a line ends at LF, CRLF or a lone CR; blank lines are skipped; a
@@ -126,7 +126,7 @@ impl<R: BufRead> CaseStream<R> {
 
     /// Whether the next three bytes are a UTF-8 byte-order mark (EF BB BF).
     fn bom_ahead(&mut self) -> io::Result<bool> {
-        // A mark split across two reads is not seen here; [`Chunk::read`] strips it.
+        // A mark split across two reads is not seen here; [`super::read_chunk`] strips it.
         Ok(self.input.fill_buf()?.starts_with(&[0xEF, 0xBB, 0xBF]))
     }
 
