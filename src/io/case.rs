@@ -138,38 +138,41 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
             case: Err(error),
         };
     }
-    let case = deserialize_at::<RawCase>(value, "")
-        .map_err(name_missing_field)
-        .and_then(|raw| {
-            let objects = raw
-                .objects
-                .into_iter()
-                .enumerate()
-                .map(|(i, v)| parse_object(v, &format!("objects[{i}]")))
-                .collect::<Result<Vec<_>, _>>()?;
-            let onto = raw.onto.map(|v| parse_object(v, "onto")).transpose()?;
-            let shell = raw.shell.map(|v| parse_object(v, "shell")).transpose()?;
-            if let Some(Double(t)) = raw.options.time_limit {
-                if t.is_nan() || t <= 0.0 {
-                    return Err(GeomError::InvalidValue {
-                        field: "options.time_limit".into(),
-                        reason: format!("{} is not a positive number of seconds", shortest(t)),
-                    });
-                }
+    // Plain serde first (no path tracking); on an error, again with paths to name it.
+    let raw = match RawCase::deserialize(&value) {
+        Ok(raw) => Ok(raw),
+        Err(_) => deserialize_at::<RawCase>(value, "").map_err(name_missing_field),
+    };
+    let case = raw.and_then(|raw| {
+        let objects = raw
+            .objects
+            .into_iter()
+            .enumerate()
+            .map(|(i, v)| parse_object(v, &format!("objects[{i}]")))
+            .collect::<Result<Vec<_>, _>>()?;
+        let onto = raw.onto.map(|v| parse_object(v, "onto")).transpose()?;
+        let shell = raw.shell.map(|v| parse_object(v, "shell")).transpose()?;
+        if let Some(Double(t)) = raw.options.time_limit {
+            if t.is_nan() || t <= 0.0 {
+                return Err(GeomError::InvalidValue {
+                    field: "options.time_limit".into(),
+                    reason: format!("{} is not a positive number of seconds", shortest(t)),
+                });
             }
-            Ok(Case {
-                id: raw.id,
-                op: raw.op,
-                objects,
-                point: raw.point,
-                onto,
-                direction: raw.direction,
-                nearest: raw.nearest,
-                shell,
-                claim: raw.claim,
-                options: raw.options,
-            })
-        });
+        }
+        Ok(Case {
+            id: raw.id,
+            op: raw.op,
+            objects,
+            point: raw.point,
+            onto,
+            direction: raw.direction,
+            nearest: raw.nearest,
+            shell,
+            claim: raw.claim,
+            options: raw.options,
+        })
+    });
     ReadCase { id, case }
 }
 

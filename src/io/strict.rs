@@ -5,6 +5,7 @@
 //! written (`18446744073709551616`, `1.50`) although serde_json reads it as a double.
 
 use serde::de::{self, DeserializeSeed, MapAccess, SeqAccess, Visitor};
+use serde_json::map::Entry;
 use serde_json::value::RawValue;
 use serde_json::{Map, Value};
 use std::cell::RefCell;
@@ -141,29 +142,39 @@ impl<'de> Visitor<'de> for Seed<'_, '_> {
     fn visit_map<A: MapAccess<'de>>(self, mut map: A) -> Result<Value, A::Error> {
         let mut out = Map::new();
         while let Some(key) = map.next_key::<String>()? {
-            let node = PathNode {
-                parent: self.path,
-                step: Step::Key(&key),
+            // One look-up per key: the entry says whether the key came before.
+            let slot = match out.entry(key) {
+                Entry::Vacant(slot) => slot,
+                Entry::Occupied(old) => {
+                    let node = PathNode {
+                        parent: self.path,
+                        step: Step::Key(old.key()),
+                    };
+                    let message = format!("duplicate key `{}`", old.key());
+                    *self.duplicate.borrow_mut() = Some((node.text(), message.clone()));
+                    return Err(de::Error::custom(message));
+                }
             };
-            if out.contains_key(&key) {
-                let message = format!("duplicate key `{key}`");
-                *self.duplicate.borrow_mut() = Some((node.text(), message.clone()));
-                return Err(de::Error::custom(message));
-            }
             let value = match self.raw_id {
-                Some(slot) if key == "id" => {
+                Some(raw_slot) if slot.key() == "id" => {
                     let raw: Box<RawValue> = map.next_value()?;
                     let value = serde_json::from_str(raw.get()).map_err(de::Error::custom)?;
-                    *slot.borrow_mut() = Some(raw);
+                    *raw_slot.borrow_mut() = Some(raw);
                     value
                 }
-                _ => map.next_value_seed(Seed {
-                    path: Some(&node),
-                    raw_id: None,
-                    ..self
-                })?,
+                _ => {
+                    let node = PathNode {
+                        parent: self.path,
+                        step: Step::Key(slot.key()),
+                    };
+                    map.next_value_seed(Seed {
+                        path: Some(&node),
+                        raw_id: None,
+                        ..self
+                    })?
+                }
             };
-            out.insert(key, value);
+            slot.insert(value);
         }
         Ok(Value::Object(out))
     }
