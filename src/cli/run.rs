@@ -10,8 +10,9 @@
 //! - Memory stays flat: at most [`WINDOW`] batches are between the reader and the
 //!   writer (read, being solved, or solved and waiting for an earlier one).
 //! - A result is written as soon as its batch and all before it are done; standard
-//!   output is flushed whenever the writer would wait, and lines are written whole,
-//!   so a run stopped by a timeout or Ctrl-C keeps every answer it had written.
+//!   output is flushed whenever the writer would wait, so a run stopped by a timeout
+//!   or Ctrl-C keeps every answer it had written (only a signal that lands in the
+//!   middle of a write can leave the last line cut short).
 //! - A panic while solving a case (a bug) becomes that case's `error` record of kind
 //!   `internal`; the other cases go on.
 
