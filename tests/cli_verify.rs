@@ -95,9 +95,11 @@ fn exit_status_says_whether_all_claims_hold() {
     };
     let good = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1]}]}});
     let bad = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1.5]}]}});
+    // Exit bits (README "Exit status"): 1 a bad case, 4 a disputed claim; both show.
     assert_eq!(run(std::slice::from_ref(&good)), Some(0));
-    assert_eq!(run(&[good.clone(), bad]), Some(3));
-    assert_eq!(run(&[good, json!({"op": "intersect"})]), Some(1));
+    assert_eq!(run(&[good.clone(), bad.clone()]), Some(4));
+    assert_eq!(run(&[good.clone(), json!({"op": "intersect"})]), Some(1));
+    assert_eq!(run(&[json!({"op": "intersect"}), bad, good]), Some(5));
 }
 
 /// A numerically certified answer (a line across a cylinder: verified boxes, no exact

@@ -22,7 +22,7 @@
 //! coplanarity of crossing lines is an exact zero, which no filter can prove, so its
 //! sign goes to exact rings of rising cost when the filter cannot decide it; parallel
 //! and collinear objects, and coordinates the filter cannot round, go to the whole
-//! decision procedure in exact rings ([`super::exact_tier`]).
+//! decision procedure in exact rings (`exact_tier`).
 
 mod filter;
 mod procedure;
