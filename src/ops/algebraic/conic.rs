@@ -12,7 +12,12 @@ impl QuadricForm<2> {
     /// The conic `a x² + b xy + c y² + d x + e y + f = 0` (§1.7 with `a₁₂ = b/2`,
     /// `a₁₃ = d/2`, `a₂₃ = e/2`), coefficients taken exactly; not all zero.
     pub fn conic(coefficients: [f64; 6]) -> Result<Self, GeomError> {
-        let [a, b, c, d, e, f] = exact_vec("conic", &coefficients)?;
+        Self::conic_exact(exact_vec("conic", &coefficients)?)
+    }
+
+    /// [`QuadricForm::conic`] from exact rational coefficients; not all zero.
+    pub fn conic_exact(coefficients: [Rational; 6]) -> Result<Self, GeomError> {
+        let [a, b, c, d, e, f] = coefficients;
         let half = |x: Rational| x / 2u32;
         let q = QuadricForm {
             a: [[a, half(b.clone())], [half(b), c]],

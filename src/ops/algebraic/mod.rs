@@ -18,6 +18,7 @@ mod bivariate;
 mod conic;
 mod conic_conic;
 mod exact;
+mod foot2;
 mod line;
 mod line_surface;
 pub(crate) mod pairs;
@@ -26,6 +27,7 @@ mod quadric;
 mod rounding;
 
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
+pub(crate) use foot2::project_point_conic2;
 pub use line::{LineCut, LineHit};
 pub use line_surface::{
     intersect_line_conic, intersect_line_quadric, intersect_line_quadric_exact,

@@ -342,7 +342,7 @@ type Rounding = (Vec<Param>, bool);
 
 /// An exact answer with a parameter that Ziv's loop could not round within its cap:
 /// every number is still enclosed, but `exact` promises correct rounding.
-fn not_correctly_rounded(r: &mut Certified<Answer>) {
+pub(super) fn not_correctly_rounded(r: &mut Certified<Answer>) {
     r.status = r.status.weakest(Status::Verified);
     r.reason = Some(format!(
         "a parameter could not be correctly rounded within {PRECISION_CAP} bits; its box holds the exact value"
@@ -383,10 +383,10 @@ pub(crate) fn line_surface(
 }
 
 /// A plane conic with the inverse of its parametrisation (`None`: implicit).
-struct PlaneConic {
-    form: QuadricForm<2>,
+pub(super) struct PlaneConic {
+    pub(super) form: QuadricForm<2>,
     /// Centre and semi-axes of `circle2` / `ellipse2`: `t = atan2((y−c_y)/b, (x−c_x)/a)`.
-    param: Option<Ellipse2>,
+    pub(super) param: Option<Ellipse2>,
 }
 
 impl PlaneConic {
@@ -401,7 +401,7 @@ impl PlaneConic {
 
     /// The parameter of a point with algebraic coordinates, correctly rounded where it
     /// can be.
-    fn point(&self, h: &ConicHit, b: &[Interval; 2]) -> Rounding {
+    pub(super) fn point(&self, h: &ConicHit, b: &[Interval; 2]) -> Rounding {
         match self.param.map(|e| e.point(&h.x, &h.y)) {
             None => (vec![], true),
             Some(Some(t)) => (vec![t], true),
@@ -420,7 +420,7 @@ impl PlaneConic {
     }
 }
 
-fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
+pub(super) fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
     match shape {
         Shape::Curve2(AnyCurve2::Analytic(c)) if c.is_closed() => {
             let (form, axes) = match c.shape() {

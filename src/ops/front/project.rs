@@ -3,6 +3,7 @@
 use super::project_curved;
 use crate::certificate::Certified;
 use crate::error::GeomError;
+use crate::ops::algebraic::project_point_conic2;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
 use crate::ops::options::ProjectOptions;
@@ -35,12 +36,20 @@ pub fn project(
         }
         Shape::Curve2(c) => {
             let p = point.doubles::<2>("point")?;
-            project_curved::onto_curve(c, p, how.nearest, opts)
+            match project_point_conic2(p, onto, how.nearest) {
+                Some(r) => Ok(r),
+                None => project_curved::onto_curve(c, p, how.nearest, opts),
+            }
         }
-        Shape::Conic2(_) => Err(GeomError::Unsupported {
-            field: "onto".into(),
-            reason: "projection onto an implicit `conic2` is not implemented".into(),
-        }),
+        Shape::Conic2(_) => {
+            let p = point.doubles::<2>("point")?;
+            project_point_conic2(p, onto, how.nearest).ok_or_else(|| GeomError::Unsupported {
+                field: "onto".into(),
+                reason: "projection onto a degenerate `conic2` (a line pair), or onto a \
+                         conic from its centre, is not implemented"
+                    .into(),
+            })
+        }
         Shape::Polyhedron(_) => Err(GeomError::Unsupported {
             field: "onto.type".into(),
             reason: "a polyhedron is used as the `shell` of `classify` in this build".into(),
