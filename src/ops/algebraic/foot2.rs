@@ -125,7 +125,7 @@ pub(crate) fn project_point_conic2(
         (0..hits.len()).collect()
     };
     let mut all_rounded = true;
-    let points = chosen
+    let points: Vec<Point> = chosen
         .into_iter()
         .map(|i| {
             let h = &hits[i];
@@ -146,6 +146,13 @@ pub(crate) fn project_point_conic2(
             }
         })
         .collect();
+    // In the order of the curve's parameter, as the numeric path reports feet.
+    let mut points = points;
+    points.sort_by(|a, b| {
+        a.params[0]
+            .partial_cmp(&b.params[0])
+            .unwrap_or(Ordering::Equal)
+    });
     let mut r = cut.clone_with(Answer::from_points(points));
     if !all_rounded {
         not_correctly_rounded(&mut r);
