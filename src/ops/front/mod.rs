@@ -16,6 +16,42 @@ mod project;
 mod project_curved;
 mod seeds;
 
-pub use classify::classify;
-pub use intersect::intersect;
-pub use project::project;
+use crate::certificate::Certified;
+use crate::error::GeomError;
+use crate::ops::answer::Answer;
+use crate::ops::beyond_range::exact_beyond_range;
+use crate::ops::options::{Options, ProjectOptions};
+use crate::ops::shape::{Position, Shape};
+
+// Each entry point answers again with exact rationals when a number of its answer is
+// beyond the double range ([`exact_beyond_range`]), so no value is ever lost.
+
+/// Every common point (or line, segment, coincidence) of two or three shapes,
+/// certified ([`intersect::intersect`]).
+pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, GeomError> {
+    exact_beyond_range(opts, |o| intersect::intersect(shapes, o))
+}
+
+/// The projections of a point onto a shape, certified ([`project::project`]).
+pub fn project(
+    point: &Position,
+    onto: &Shape,
+    how: &ProjectOptions,
+) -> Result<Certified<Answer>, GeomError> {
+    exact_beyond_range(&how.options, |o| {
+        let how = ProjectOptions {
+            options: o.clone(),
+            ..how.clone()
+        };
+        project::project(point, onto, &how)
+    })
+}
+
+/// The side of a closed shell a point lies on, certified ([`classify::classify`]).
+pub fn classify(
+    point: &Position,
+    shell: &Shape,
+    opts: &Options,
+) -> Result<Certified<Answer>, GeomError> {
+    exact_beyond_range(opts, |o| classify::classify(point, shell, o))
+}
