@@ -27,12 +27,14 @@ use crate::ops::shape::{Position, Shape};
 // beyond the double range ([`exact_beyond_range`]), so no value is ever lost.
 
 /// Every common point (or line, segment, coincidence) of two or three shapes,
-/// certified ([`intersect::intersect`]).
+/// certified. Errors name the offending shape as `objects[i]`.
 pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, GeomError> {
     exact_beyond_range(opts, |o| intersect::intersect(shapes, o))
 }
 
-/// The projections of a point onto a shape, certified ([`project::project`]).
+/// The projections of `point` onto `onto`: every foot of a perpendicular (points where
+/// the distance is stationary, docs/FORMAT.md "Projections"), or with `nearest` the nearest
+/// point of the closed domain, or with `direction` the hits of the ray (§3.5).
 pub fn project(
     point: &Position,
     onto: &Shape,
@@ -47,7 +49,9 @@ pub fn project(
     })
 }
 
-/// The side of a closed shell a point lies on, certified ([`classify::classify`]).
+/// The side of `point` relative to the closed `shell` (`inside`, `on`, `outside`),
+/// with the nearest point of the shell when it is proven (else the certificate's
+/// `reason` says why not).
 pub fn classify(
     point: &Position,
     shell: &Shape,
