@@ -196,6 +196,18 @@ fn records_breaking_a_rule_are_rejected() {
             }),
         ),
         (
+            "a null coordinate (a number must never be lost)",
+            mutated(&points, |r| r["points"][0]["xyz"][0] = Value::Null),
+        ),
+        (
+            "a null box bound",
+            mutated(&points, |r| r["points"][0]["box"][0][1] = Value::Null),
+        ),
+        (
+            "a coordinate as a string other than \"inf\"",
+            mutated(&points, |r| r["points"][0]["xyz"][0] = json!("1e400")),
+        ),
+        (
             "a point with an unknown field",
             mutated(&points, |r| r["points"][0]["weight"] = json!(1)),
         ),

@@ -1,5 +1,10 @@
 //! Answers of the front door → result records (docs/FORMAT.md "Results"): a field-for-field
 //! translation; exact rationals are written as `"p/q"` strings.
+//!
+//! A number with no finite double (beyond the f64 range) is written `"inf"` or `"-inf"`
+//! ([`super::result`]), and the point or line holding it always carries its exact
+//! rationals ([`crate::ops::beyond_range`]), so no value is lost (docs/FORMAT.md
+//! "Numbers beyond the double range").
 
 use rug::Rational;
 

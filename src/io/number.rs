@@ -6,6 +6,7 @@
 //! JSON; a number too large for a double is a parse error naming the field.
 
 use serde::de::{self, Deserializer, Visitor};
+use serde::ser::{Serialize, Serializer};
 use serde::Deserialize;
 use std::fmt;
 
@@ -91,6 +92,64 @@ impl<'de> Deserialize<'de> for Double {
 /// when that is shorter (`1e300`, not the 301 digits of Rust's `{}`), as in results.
 pub fn shortest(x: f64) -> String {
     serde_json::Number::from_f64(x).map_or_else(|| format!("{x}"), |n| n.to_string())
+}
+
+/// The doubles of results (docs/FORMAT.md "Numbers beyond the double range"): a
+/// finite double is a JSON number in shortest round-trip form; JSON has no infinity, so
+/// `±∞` — the correctly rounded value of a number beyond the double range, or an
+/// enclosure end with no finite double — is the string `"inf"` or `"-inf"` (never
+/// `null`). NaN, which no result holds, would be `"nan"`.
+pub trait Doubles {
+    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error>;
+}
+
+impl Doubles for f64 {
+    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        if self.is_finite() {
+            s.serialize_f64(*self)
+        } else if self.is_nan() {
+            s.serialize_str("nan")
+        } else if *self > 0.0 {
+            s.serialize_str("inf")
+        } else {
+            s.serialize_str("-inf")
+        }
+    }
+}
+
+/// A borrowed value serialised through [`Doubles`].
+struct AsDoubles<'a, T>(&'a T);
+
+impl<T: Doubles> Serialize for AsDoubles<'_, T> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.0.write(s)
+    }
+}
+
+impl<T: Doubles> Doubles for Vec<T> {
+    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.iter().map(AsDoubles))
+    }
+}
+
+impl<T: Doubles, const N: usize> Doubles for [T; N] {
+    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        s.collect_seq(self.iter().map(AsDoubles))
+    }
+}
+
+impl<T: Doubles> Doubles for Option<T> {
+    fn write<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        match self {
+            Some(v) => s.serialize_some(&AsDoubles(v)),
+            None => s.serialize_none(),
+        }
+    }
+}
+
+/// `#[serde(serialize_with = "doubles")]` for result fields holding doubles.
+pub fn doubles<T: Doubles, S: Serializer>(v: &T, s: S) -> Result<S::Ok, S::Error> {
+    v.write(s)
 }
 
 /// Digits beyond which a plain decimal in a message is rewritten by [`tidy_numbers`].
@@ -207,6 +266,25 @@ mod tests {
         }
         assert_eq!(abbreviate("1e309"), "1e309");
         assert!(abbreviate(&"9".repeat(400)).len() < 50);
+    }
+
+    #[test]
+    fn doubles_beyond_the_range_are_strings() {
+        #[derive(serde::Serialize)]
+        struct R {
+            #[serde(serialize_with = "doubles")]
+            v: Vec<[f64; 2]>,
+            #[serde(serialize_with = "doubles")]
+            o: Option<f64>,
+        }
+        let r = R {
+            v: vec![[f64::MAX, f64::INFINITY], [f64::NEG_INFINITY, 0.5]],
+            o: Some(f64::NEG_INFINITY),
+        };
+        assert_eq!(
+            serde_json::to_string(&r).unwrap(),
+            r#"{"v":[[1.7976931348623157e308,"inf"],["-inf",0.5]],"o":"-inf"}"#
+        );
     }
 
     #[test]

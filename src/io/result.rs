@@ -2,8 +2,11 @@
 //!
 //! Doubles are printed in the shortest form that reads back to the same bits
 //! (serde_json uses ryu). A value that has no finite double (an exact coordinate
-//! beyond the f64 range) is written `null`, with its exact rational in `exact`.
+//! beyond the f64 range, correctly rounded to ±∞) is written `"inf"` or `"-inf"`
+//! ([`super::number::Doubles`]), never `null`, and its point carries its exact
+//! rationals in `exact` (docs/FORMAT.md "Numbers beyond the double range").
 
+use super::number::doubles;
 use crate::certificate::Certified;
 use crate::error::GeomError;
 use serde::Serialize;
@@ -27,21 +30,23 @@ pub struct ExactOut {
 /// One reported point (`points[]`).
 #[derive(Debug, Clone, Default, PartialEq, Serialize)]
 pub struct PointOut {
+    #[serde(serialize_with = "doubles")]
     pub xyz: Vec<f64>,
     /// One array per input object, in input order (empty for objects without
     /// parameters, such as implicit planes).
+    #[serde(serialize_with = "doubles")]
     pub params: Vec<Vec<f64>>,
-    #[serde(rename = "box")]
+    #[serde(rename = "box", serialize_with = "doubles")]
     pub bounds: Vec<Bounds>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
     pub param_box: Option<Vec<Vec<Bounds>>>,
     pub multiplicity: u32,
     pub tangent: bool,
     /// Projections: the distance from the query point (correctly rounded).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
     pub distance: Option<f64>,
     /// Projections onto planes: the signed distance along the normal (u × v or n).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
     pub signed_distance: Option<f64>,
     /// Projections: `true` for the nearest of the reported points.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -53,14 +58,18 @@ pub struct PointOut {
 /// A line in the parameter plane of a parametric plane: `origin + t·dir` (§8 eq. (8.4)).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ParamLineOut {
+    #[serde(serialize_with = "doubles")]
     pub origin: Vec<f64>,
+    #[serde(serialize_with = "doubles")]
     pub dir: Vec<f64>,
 }
 
 /// `line` of a result: a point and a direction (exact where the inputs are linear).
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct LineOut {
+    #[serde(serialize_with = "doubles")]
     pub point: Vec<f64>,
+    #[serde(serialize_with = "doubles")]
     pub dir: Vec<f64>,
     /// The line in the parameters of each input object, in input order (§8 eq. (8.4));
     /// `null` for objects without parameters.
@@ -116,7 +125,7 @@ pub struct CaseResult {
     /// Why the answer is empty or undecided (`parallel`, `extensions_meet`, ...).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
     pub perturbation: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub points: Option<Vec<PointOut>>,
@@ -144,7 +153,7 @@ pub struct ClaimOut {
     /// The certificate level of the truth the verdict rests on.
     pub status: &'static str,
     /// The distance from the claimed point to the nearest true solution (rounded).
-    #[serde(skip_serializing_if = "Option::is_none")]
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
     pub distance: Option<f64>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub reason: Option<String>,

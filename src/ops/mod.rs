@@ -20,6 +20,7 @@
 
 pub mod algebraic;
 pub mod answer;
+pub mod beyond_range;
 pub mod certified;
 pub mod classify;
 pub mod closed_surface;
@@ -33,6 +34,7 @@ pub mod polyhedron;
 pub mod project;
 pub mod shape;
 pub mod space_curves;
+pub mod verify;
 
 pub use answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
