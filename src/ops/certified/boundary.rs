@@ -173,10 +173,9 @@ fn candidates(i: usize, bi: &Interval, estimate: f64, unknowns: &Unknowns) -> Ve
         // The seam: `lo` itself or `lo + P` (`P` an enclosure of the exact period).
         let p = unknowns.period(i);
         let at_lo = Interval::point(lo);
-        if !unknowns.rounded[i] || lo == 0.0 {
-            if bi.contains(lo) || (at_lo + p).is_subset(bi) || (at_lo - p).is_subset(bi) {
-                add(lo);
-            }
+        let exact_lo = !unknowns.rounded[i] || lo == 0.0;
+        if exact_lo && (bi.contains(lo) || (at_lo + p).is_subset(bi) || (at_lo - p).is_subset(bi)) {
+            add(lo);
         }
     } else if !unknowns.rounded[i] {
         for end in [lo, hi] {
