@@ -59,6 +59,9 @@ impl Surface for AnySurface {
     fn domain_rounded(&self) -> [bool; 2] {
         each_surface!(self, s => s.domain_rounded())
     }
+    fn v_poles(&self) -> [bool; 2] {
+        each_surface!(self, s => s.v_poles())
+    }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         each_surface!(self, s => s.jet(u, v, order))
     }

@@ -72,6 +72,13 @@ pub trait Surface {
         [rounded(u), rounded(v)]
     }
 
+    /// The `v = v_min` / `v = v_max` edges that collapse to one point, a pole
+    /// (OPERATIONS.md §14.1: `u` is undefined there and `s_u ≡ 0` along the edge):
+    /// a sphere's and an ellipsoid's `v = ±π/2`. Default: none.
+    fn v_poles(&self) -> [bool; 2] {
+        [false, false]
+    }
+
     /// Value and partial derivatives up to `order` (0, 1 or 2) at `(u, v)`, in the
     /// order `[s, s_u, s_v, s_uu, s_uv, s_vv]` truncated to 1, 3 or 6 entries (§1.3).
     ///

@@ -84,6 +84,10 @@ impl Surface for Sphere {
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
+    fn v_poles(&self) -> [bool; 2] {
+        let [lo, hi] = self.domain.1;
+        [lo == -HALF_PI, hi == HALF_PI]
+    }
     fn is_closed(&self) -> [bool; 2] {
         angular_closed(&self.domain)
     }
@@ -130,6 +134,10 @@ domain_accessors!(Ellipsoid);
 impl Surface for Ellipsoid {
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
+    }
+    fn v_poles(&self) -> [bool; 2] {
+        let [lo, hi] = self.domain.1;
+        [lo == -HALF_PI, hi == HALF_PI]
     }
     fn is_closed(&self) -> [bool; 2] {
         angular_closed(&self.domain)

@@ -21,7 +21,10 @@ use crate::num::Interval;
 
 pub use crate::certify::Options;
 
+pub mod boundary;
 mod seam;
+
+use boundary::{decide_boundary, Decided};
 
 /// The unknowns of an operation: their domain and which are periodic.
 #[derive(Debug, Clone, PartialEq)]
@@ -117,6 +120,21 @@ pub fn certify_roots<S: System>(
     guesses: &[Vec<f64>],
     opts: &Options,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
+    certify_roots_with(sys, unknowns, guesses, opts, |_| false)
+}
+
+/// [`certify_roots`], where `not_an_answer` may prove a `verified` root whose box
+/// straddles a true end of the domain (and that [`boundary`] could not place) to be no
+/// answer of the operation — a root of the system that the operation's geometry
+/// rules out, such as a pole of the parametrisation (OPERATIONS.md §14.1) that is not
+/// a foot. Such roots are dropped; it must return `true` only with a proof.
+pub fn certify_roots_with<S: System>(
+    sys: &S,
+    unknowns: &Unknowns,
+    guesses: &[Vec<f64>],
+    opts: &Options,
+    not_an_answer: impl Fn(&Root) -> bool,
+) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
     let search = unknowns.search_box();
     let solved = certify::solve(sys, &search, opts)?;
     let mut roots: Vec<CertifiedRoot> = Vec::new();
@@ -129,11 +147,14 @@ pub fn certify_roots<S: System>(
             .zip(&unknowns.periodic)
             .zip(&r.enclosure)
             .all(|((&[lo, hi], &p), x)| p || (lo <= x.lo() && x.hi() <= hi));
-        push_unique(
-            &mut roots,
-            CertifiedRoot::from_root(r, !on_seam_only),
-            unknowns,
-        );
+        let root = if on_seam_only {
+            Some(CertifiedRoot::from_root(r, false))
+        } else {
+            at_boundary(sys, r, unknowns, opts, &not_an_answer)
+        };
+        if let Some(root) = root {
+            push_unique(&mut roots, root, unknowns);
+        }
     }
     let mut complete = solved.complete;
     let mut bits = solved.bits;
@@ -154,11 +175,14 @@ pub fn certify_roots<S: System>(
                 continue;
             }
             bits = bits.max(c.bits);
-            push_unique(
-                &mut roots,
-                CertifiedRoot::from_root(&c.value, place == Placement::Straddles),
-                unknowns,
-            );
+            let root = if place == Placement::Straddles {
+                at_boundary(sys, &c.value, unknowns, opts, &not_an_answer)
+            } else {
+                Some(CertifiedRoot::from_root(&c.value, false))
+            };
+            if let Some(root) = root {
+                push_unique(&mut roots, root, unknowns);
+            }
         }
     }
     let status = roots
@@ -194,6 +218,24 @@ pub fn certify_roots<S: System>(
         reason: if complete { None } else { reason },
         perturbation,
     })
+}
+
+/// A root whose box straddles a true end of the domain, decided where possible
+/// ([`boundary`]): `None` when it is proven outside the domain, `undecided` when it
+/// cannot be placed, dropped when `not_an_answer` proves it no answer.
+fn at_boundary<S: System>(
+    sys: &S,
+    r: &Root,
+    unknowns: &Unknowns,
+    opts: &Options,
+    not_an_answer: &impl Fn(&Root) -> bool,
+) -> Option<CertifiedRoot> {
+    match decide_boundary(sys, r, unknowns, opts.max_bits) {
+        Decided::Inside(root) => Some(root),
+        Decided::Outside => None,
+        Decided::Open if not_an_answer(r) => None,
+        Decided::Open => Some(CertifiedRoot::from_root(r, true)),
+    }
 }
 
 /// Add `root` unless it is the seam copy of a root already found (module doc).

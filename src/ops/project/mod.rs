@@ -3,6 +3,7 @@
 
 pub mod curve;
 pub mod direction;
+pub mod pole;
 pub mod surface;
 
 pub use curve::{

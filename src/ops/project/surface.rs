@@ -296,7 +296,8 @@ impl<S: Surface> System for SurfaceFootSystem<'_, S> {
 
 /// All feet from `p` onto `surface` (§3.4), certified like
 /// [`super::curve::project_point_curve`]: roots of (3.9) in verified boxes,
-/// `complete` when the subdivision covered the domain.
+/// `complete` when the subdivision covered the domain; roots at a pole whose point is
+/// no foot are not feet ([`super::pole`]).
 pub fn project_point_surface<S: Surface>(
     surface: &S,
     p: &[f64; 3],
@@ -304,14 +305,18 @@ pub fn project_point_surface<S: Surface>(
     precision: &Precision,
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
-    use crate::ops::certified::{certify_roots, surface_point, surface_unknowns, CertifiedPoint};
+    use crate::ops::certified::{
+        certify_roots_with, surface_point, surface_unknowns, CertifiedPoint,
+    };
     let guesses: Vec<Vec<f64>> =
         match project_point_surface_f64(surface, p, nodes, precision, false) {
             SurfaceFeet::Finite(f) => f.iter().map(|x| x.params.to_vec()).collect(),
             SurfaceFeet::Infinite => Vec::new(),
         };
     let sys = SurfaceFootSystem { surface, point: *p };
-    let roots = certify_roots(&sys, &surface_unknowns(surface), &guesses, opts)?;
+    // Roots on a pole edge whose point is no foot are dropped (`super::pole`).
+    let not_a_foot = |r: &crate::certify::Root| super::pole::spurious_pole_root(surface, p, r);
+    let roots = certify_roots_with(&sys, &surface_unknowns(surface), &guesses, opts, not_a_foot)?;
     Ok(roots.map(|rs| {
         rs.into_iter()
             .map(|root| {
