@@ -16,15 +16,27 @@ fn solve_circles(c: &Circles) -> Certified<Solutions> {
     solve(c, &CIRCLE_DOMAIN, &Options::default()).unwrap()
 }
 
-/// Every reported root box holds the number of true roots its status allows, and when
-/// complete every true root lies in a reported box.
-fn check_against_truth(r: &Certified<Solutions>, truth: &[Vec<Float>]) {
+/// Every reported root box holds the number of true roots its status allows, a
+/// singular box states a perturbation of at least `least` (the closed-form least
+/// perturbation that makes a double root), and when complete every true root lies in
+/// exactly one reported box.
+fn check_against_truth(r: &Certified<Solutions>, truth: &[Vec<Float>], least: &Float) {
     let s = &r.value;
     for root in s.roots.iter().chain(&s.boundary_roots) {
         let k = count_inside(root, truth);
         match root.status {
             Status::Verified => assert_eq!(k, 1, "a verified box must hold one root: {root:?}"),
-            Status::VerifiedSingular => assert!(k <= 2, "{root:?}"),
+            Status::VerifiedSingular => {
+                assert!(k <= 2, "{root:?}");
+                let e = root
+                    .perturbation
+                    .expect("a singular box states its perturbation");
+                assert!(
+                    *least <= e,
+                    "perturbation {e:e} below the least {:e} that makes a double root",
+                    least.to_f64()
+                );
+            }
             other => panic!("unexpected status {other:?}"),
         }
     }
@@ -34,10 +46,11 @@ fn check_against_truth(r: &Certified<Solutions>, truth: &[Vec<Float>]) {
                 .roots
                 .iter()
                 .chain(&s.boundary_roots)
-                .any(|root| encloses(root, t));
-            assert!(
-                covered,
-                "complete, but the root {t:?} is in no reported box"
+                .filter(|root| encloses(root, t))
+                .count();
+            assert_eq!(
+                covered, 1,
+                "complete, but the root {t:?} is in {covered} reported boxes"
             );
         }
     }
@@ -57,7 +70,7 @@ fn transversal_circles_two_verified_roots() {
     assert_eq!(r.bits, 53);
     assert_eq!(r.value.roots.len(), 2);
     let truth: Vec<Vec<Float>> = truth.iter().map(as_vec).collect();
-    check_against_truth(&r, &truth);
+    check_against_truth(&r, &truth, &c.least_perturbation());
     for root in &r.value.roots {
         assert!(root.enclosure.iter().all(|iv| iv.width() < 1e-12));
     }
@@ -96,7 +109,7 @@ fn nearly_tangent(g: f64) {
     );
     assert!(r.complete, "{:?}", r.value.undecided);
     let truth: Vec<Vec<Float>> = truth.iter().map(as_vec).collect();
-    check_against_truth(&r, &truth);
+    check_against_truth(&r, &truth, &c.least_perturbation());
     let verified = r
         .value
         .roots
@@ -124,17 +137,22 @@ fn nearly_tangent_circles_gap_1e_15() {
 
 #[test]
 fn nearly_missing_circles_have_no_verified_root() {
-    for g in [1e-6, 1e-12, 1e-15] {
+    for g in [1e-3, 1e-6, 1e-9, 1e-12, 1e-15] {
         let c = Circles::unit_pair(2.0 + g);
         assert!(c.truth().0.is_empty());
         let r = solve_circles(&c);
         eprintln!("miss {g:e}: {:?} {:?}", r.status, r.value.roots);
         assert!(r.complete);
-        assert!(r
-            .value
-            .roots
-            .iter()
-            .all(|x| x.status == Status::VerifiedSingular));
+        // nothing, or one singular box whose perturbation covers the gap: moving one
+        // circle's r² by e makes them touch only for |e| ≥ (2 + g − 1)² − 1 ≈ 2g
+        assert!(r.value.roots.len() <= 1, "{:?}", r.value.roots);
+        check_against_truth(&r, &[], &c.least_perturbation());
+        let least = c.least_perturbation();
+        let gap = (2.0 + g) - 2.0; // the gap of the rounded data (exact, Sterbenz)
+        assert!(
+            least > 1.9 * gap && least < 2.1 * gap,
+            "closed form: {least}"
+        );
     }
 }
 
@@ -150,7 +168,7 @@ fn roots_below_f64_resolution_need_mpfr() {
     eprintln!("{:?} bits {} {:#?}", r.status, r.bits, r.value.roots);
     assert!(r.complete);
     let truth: Vec<Vec<Float>> = truth.iter().map(as_vec).collect();
-    check_against_truth(&r, &truth);
+    check_against_truth(&r, &truth, &c.least_perturbation());
     assert_eq!(r.value.roots.len(), 2);
     assert!(r
         .value
@@ -230,7 +248,7 @@ fn roots_on_a_bisection_plane_are_reported_once() {
     assert!(r.complete);
     assert_eq!(r.value.roots.len(), 2);
     let truth: Vec<Vec<Float>> = truth.iter().map(as_vec).collect();
-    check_against_truth(&r, &truth);
+    check_against_truth(&r, &truth, &c.least_perturbation());
 }
 
 #[test]
@@ -252,7 +270,7 @@ fn line_crossing_a_sphere_twice() {
     assert!(r.complete);
     assert_eq!(r.status, Status::Verified);
     assert_eq!(r.value.roots.len(), 2);
-    check_against_truth(&r, &[t, other]);
+    check_against_truth(&r, &[t, other], &LineSphere::least_perturbation(0.3, 0.2));
 }
 
 #[test]

@@ -12,6 +12,16 @@ fn f(v: &serde_json::Value) -> f64 {
     v.as_f64().expect("a number")
 }
 
+/// A truth at 1024 bits (far beyond any box's resolution).
+fn mp(x: f64) -> rug::Float {
+    rug::Float::with_val(1024, x)
+}
+
+/// `lo ≤ x ≤ hi` for a box `[lo, hi]` of the output, compared exactly (no slack).
+fn holds(b: &serde_json::Value, x: &rug::Float) -> bool {
+    *x >= f(&b[0]) && *x <= f(&b[1])
+}
+
 #[test]
 fn all_projections_onto_the_ellipse_of_16_3() {
     let r = solve(&[
@@ -69,11 +79,11 @@ fn line_and_sphere_of_16_4_crossing_and_tangent() {
     assert_eq!(p["multiplicity"], 2);
     assert_eq!(p["exact"]["xyz"], serde_json::json!(["0", "2", "0"]), "{p}");
     assert_eq!(p["exact"]["params"][0], serde_json::json!(["3"]));
-    // (u, v) = (π/2, 0) enclosed.
+    // (u, v) = (π/2, 0) enclosed: π/2 at 1024 bits, strictly inside the box.
+    let half_pi = rug::Float::with_val(1024, rug::float::Constant::Pi) / 2u32;
     let u = &p["param_box"][1][0];
-    assert!(
-        f(&u[0]) <= std::f64::consts::FRAC_PI_2 && std::f64::consts::FRAC_PI_2 <= f(&u[1]) + 1e-15
-    );
+    assert!(holds(u, &half_pi), "{u}");
+    assert!(holds(&p["param_box"][1][1], &mp(0.0)), "{p}");
     assert_eq!(r[2]["kind"], "empty", "{}", r[2]);
     assert_eq!(r[2]["complete"], true);
 }
@@ -358,12 +368,10 @@ fn classify_reports_the_proven_nearest_point_of_the_shell() {
     assert!((f(&p["distance"]) - 0.5).abs() < 1e-12);
     assert_eq!(r[1]["kind"], "outside");
     let q = &r[1]["points"][0];
-    let x = 1.0 - 1.0 / 3f64.sqrt();
+    // (1, 1, 1)·(1 − 1/√3) at 1024 bits.
+    let x = mp(1.0) - mp(3.0).sqrt().recip();
     for b in q["box"].as_array().expect("box") {
-        assert!(
-            f(&b[0]) <= x && x <= f(&b[1]) && f(&b[1]) - f(&b[0]) < 1e-12,
-            "{q}"
-        );
+        assert!(holds(b, &x) && f(&b[1]) - f(&b[0]) < 1e-12, "{q}");
     }
     // Every point of the sphere is nearest to its centre: no point, and the reason.
     assert_eq!(r[2]["kind"], "inside");
@@ -420,27 +428,30 @@ fn projection_onto_a_sphere_is_complete_in_closed_form() {
     let pts = g["points"].as_array().expect("points");
     assert_eq!(pts.len(), 2);
     let n = 14f64.sqrt();
+    let root14 = mp(14.0).sqrt();
     for (p, sign) in pts.iter().zip([1.0, -1.0]) {
+        // ±(1, 2, 3)/√14 at 1024 bits, strictly inside boxes narrower than 1e-15.
         for (b, x) in p["box"]
             .as_array()
             .expect("box")
             .iter()
             .zip([1.0, 2.0, 3.0])
         {
-            let x = sign * x / n;
+            let x = mp(sign * x) / &root14;
             assert!(
-                f(&b[0]) <= x && x <= f(&b[1]) && f(&b[1]) - f(&b[0]) < 1e-15,
-                "{p}"
+                holds(b, &x) && f(&b[1]) - f(&b[0]) < 1e-15,
+                "{x} not in {p}"
             );
         }
         assert!((f(&p["distance"]) - (n - sign)).abs() < 1e-14);
-        // The latitude v = ±asin(3/√14) lies in its box.
-        let v = &p["param_box"][0][1];
-        let truth = sign * (3.0 / n).asin();
-        assert!(
-            f(&v[0]) <= truth + 1e-15 && truth - 1e-15 <= f(&v[1]),
-            "{p}"
-        );
+        // The latitude v = ±asin(3/√14) and longitude u = atan2(2, 1) (or + π).
+        let v = (mp(3.0) / &root14).asin() * sign;
+        assert!(holds(&p["param_box"][0][1], &v), "{v} not in {p}");
+        let mut u = mp(2.0 * sign).atan2(&mp(sign));
+        if u < 0 {
+            u += rug::Float::with_val(1024, rug::float::Constant::Pi) * 2u32;
+        }
+        assert!(holds(&p["param_box"][0][0], &u), "{u} not in {p}");
     }
     // On the axis: the poles, their longitude any angle.
     let p = &r[1]["points"][0];

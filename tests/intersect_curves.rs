@@ -137,26 +137,26 @@ fn certified_circle_ellipse_points_of_16_6() {
     assert!(r.complete, "{:?}", r.reason);
     assert_eq!(r.status, Status::Verified);
     assert_eq!(r.value.len(), 4, "{r:?}");
-    // x = ±√(27/8), y = ±√(5/8) (exact data): every point box holds one of them.
-    let prec = 200;
+    // x = ±√(27/8), y = ±√(5/8) (exact data): the four point boxes and the four true
+    // points one-to-one (each box holds exactly one, each point is in exactly one box).
+    let prec = 1024;
     let x = (rug::Float::with_val(prec, 27) / 8u32).sqrt();
     let y = (rug::Float::with_val(prec, 5) / 8u32).sqrt();
+    let truths: Vec<[rug::Float; 2]> = [(1, 1), (-1, 1), (-1, -1), (1, -1)]
+        .iter()
+        .map(|&(sx, sy)| [x.clone() * sx, y.clone() * sy])
+        .collect();
+    let holds = |b: &[geocert::num::Interval; 2], t: &[rug::Float; 2]| {
+        (0..2).all(|k| t[k] >= b[k].lo() && t[k] <= b[k].hi())
+    };
     for p in &r.value {
-        let b = &p.point_box;
-        let sx = if p.point[0] > 0.0 {
-            x.clone()
-        } else {
-            -x.clone()
-        };
-        let sy = if p.point[1] > 0.0 {
-            y.clone()
-        } else {
-            -y.clone()
-        };
-        assert!(
-            b[0].lo() <= sx && sx <= b[0].hi() && b[1].lo() <= sy && sy <= b[1].hi(),
-            "{b:?}"
-        );
+        let k = truths.iter().filter(|t| holds(&p.point_box, t)).count();
+        assert_eq!(k, 1, "{:?} holds {k} true points", p.point_box);
+        assert_eq!(p.root.status, Status::Verified);
+    }
+    for t in &truths {
+        let k = r.value.iter().filter(|p| holds(&p.point_box, t)).count();
+        assert_eq!(k, 1, "({}, {}) in {k} boxes", t[0], t[1]);
     }
     // Tangent circle r = 1: two touching points, each verified_singular around (0, ±1).
     let small = Ellipse2 { a: 1.0, b: 1.0 };
@@ -170,10 +170,24 @@ fn certified_circle_ellipse_points_of_16_6() {
     )
     .expect("valid");
     assert_eq!(r.value.len(), 2, "{r:?}");
+    assert!(r.complete, "{:?}", r.reason);
+    // (0, ±1) one-to-one with the two singular boxes.
+    let touching = [[0.0, 1.0], [0.0, -1.0]];
     for p in &r.value {
         assert_eq!(p.root.status, Status::VerifiedSingular, "{p:?}");
         let b = &p.point_box;
-        assert!(b[0].lo() <= 0.0 && 0.0 <= b[0].hi());
-        assert!((b[1].lo() <= 1.0 && 1.0 <= b[1].hi()) || (b[1].lo() <= -1.0 && -1.0 <= b[1].hi()));
+        let k = touching
+            .iter()
+            .filter(|t| (0..2).all(|i| b[i].lo() <= t[i] && t[i] <= b[i].hi()))
+            .count();
+        assert_eq!(k, 1, "{b:?}");
+    }
+    for t in touching {
+        let k = r
+            .value
+            .iter()
+            .filter(|p| (0..2).all(|i| p.point_box[i].lo() <= t[i] && t[i] <= p.point_box[i].hi()))
+            .count();
+        assert_eq!(k, 1, "{t:?} in {k} boxes");
     }
 }

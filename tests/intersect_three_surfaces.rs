@@ -120,17 +120,51 @@ fn certified_three_spheres() {
     )
     .expect("valid");
     assert_eq!(r.value.len(), 2, "{r:?}");
-    let z = rug::Float::with_val(200, 0.5f64).sqrt();
+    assert!(r.complete, "{:?}", r.reason);
+    // (1/2, 1/2, ±1/√2) at 1024 bits, one-to-one with the two point boxes; and on each
+    // sphere the parameters (u, v) = (atan2(d_y, d_x) mod 2π, asin d_z) of the unit
+    // direction d = p − c in the parameter boxes.
+    let prec = 1024;
+    let z = rug::Float::with_val(prec, 0.5f64).sqrt();
+    let tau = rug::Float::with_val(prec, rug::float::Constant::Pi) * 2u32;
+    let truths: Vec<[rug::Float; 3]> = [1, -1]
+        .iter()
+        .map(|&s| {
+            let h = rug::Float::with_val(prec, 0.5);
+            [h.clone(), h, z.clone() * s]
+        })
+        .collect();
+    let holds = |b: &geocert::num::Interval, t: &rug::Float| *t >= b.lo() && *t <= b.hi();
     for p in &r.value {
         assert_eq!(p.root.status, Status::Verified);
-        let b = &p.point_box;
-        assert!(b[0].lo() <= 0.5 && 0.5 <= b[0].hi() && b[1].lo() <= 0.5 && 0.5 <= b[1].hi());
-        let sz = if p.point[2] > 0.0 {
-            z.clone()
-        } else {
-            -z.clone()
-        };
-        assert!(b[2].lo() <= sz && sz <= b[2].hi(), "{b:?}");
+        let inside: Vec<&[rug::Float; 3]> = truths
+            .iter()
+            .filter(|t| (0..3).all(|k| holds(&p.point_box[k], &t[k])))
+            .collect();
+        assert_eq!(inside.len(), 1, "{:?}", p.point_box);
+        for (i, centre) in [a.c, b.c, c.c].iter().enumerate() {
+            let d: Vec<rug::Float> = (0..3)
+                .map(|k| rug::Float::with_val(prec, &inside[0][k] - centre[k]))
+                .collect();
+            let mut u = d[1].clone().atan2(&d[0]);
+            if u < 0 {
+                u += &tau;
+            }
+            let v = d[2].clone().asin();
+            let e = &p.root.enclosure;
+            assert!(
+                holds(&e[2 * i], &u) && holds(&e[2 * i + 1], &v),
+                "sphere {i}: ({u}, {v}) not in {:?}",
+                &e[2 * i..2 * i + 2]
+            );
+        }
     }
-    assert!(r.complete, "{:?}", r.reason);
+    for t in &truths {
+        let k = r
+            .value
+            .iter()
+            .filter(|p| (0..3).all(|k| holds(&p.point_box[k], &t[k])))
+            .count();
+        assert_eq!(k, 1, "{} in {k} boxes", t[2]);
+    }
 }

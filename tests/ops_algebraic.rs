@@ -13,6 +13,9 @@ use geocert::ops::algebraic::{
 use proptest::prelude::*;
 use rug::Rational;
 
+mod poly_support;
+use poly_support::Poly;
+
 const P: u32 = 600;
 
 fn mp(x: f64) -> MpfrInterval {
@@ -653,8 +656,96 @@ fn scaled(p: [i64; 2], k: i32) -> [f64; 2] {
     [p[0] as f64 * pow2(k), p[1] as f64 * pow2(k)]
 }
 
+/// The points of a line cut against the real roots of `F(t)`, counted independently:
+/// as many points as distinct real roots (Sturm), and the multiplicities summing to the
+/// roots counted with multiplicity (Sturm on gcd(F, F′, …)). A zero `F`: the line lies
+/// on the surface.
+fn count_matches<const D: usize>(cut: &LineCut<D>, big_f: &Poly) -> Result<(), TestCaseError> {
+    count_matches_where(cut, big_f, None)
+}
+
+/// [`count_matches`] over the roots where `keep ≥ 0` (all roots for `None`).
+fn count_matches_where<const D: usize>(
+    cut: &LineCut<D>,
+    big_f: &Poly,
+    keep: Option<&Poly>,
+) -> Result<(), TestCaseError> {
+    if big_f.is_zero() {
+        prop_assert!(matches!(cut, LineCut::Contained), "F ≡ 0 but {:?}", cut);
+        return Ok(());
+    }
+    let one = Poly::constant(Rational::from(1));
+    let keep = keep.unwrap_or(&one);
+    let hits = cut.points();
+    let (distinct, total) = if big_f.degree() == Some(0) {
+        (0, 0)
+    } else {
+        (
+            big_f.real_roots_where_nonnegative(keep),
+            big_f.real_roots_with_multiplicity_where_nonnegative(keep),
+        )
+    };
+    prop_assert_eq!(hits.len(), distinct, "distinct roots of {:?}", big_f);
+    let m: u32 = hits.iter().map(|h| h.multiplicity).sum();
+    prop_assert_eq!(m as usize, total, "multiplicities of {:?}", big_f);
+    Ok(())
+}
+
+/// Conic ∩ conic against the resultant `R(x) = Res_y(A, B)` (both conics quadratic in
+/// y, so no common point lies at infinity in the y direction): a simple real root of
+/// R lies under exactly one common point, of multiplicity 1 and real (its conjugate
+/// lies over the same x), so there are at least as many transversal points as simple
+/// real roots; and the multiplicities never exceed R's real roots counted with
+/// multiplicity.
+fn resultant_bounds(
+    a: [i64; 6],
+    b: [i64; 6],
+    points: &[geocert::ops::algebraic::ConicHit],
+) -> Result<(), TestCaseError> {
+    if a[2] == 0 || b[2] == 0 {
+        return Ok(());
+    }
+    let x = Poly::linear(Rational::new(), Rational::from(1));
+    let c = |v: i64| Poly::constant(Rational::from(v));
+    // coefficients of y², y, 1 as polynomials in x
+    let coeffs = |k: [i64; 6]| {
+        let p0 = c(k[0]).mul(&x).mul(&x).add(&c(k[3]).mul(&x)).add(&c(k[5]));
+        [c(k[2]), c(k[1]).mul(&x).add(&c(k[4])), p0]
+    };
+    let ([p2, p1, p0], [q2, q1, q0]) = (coeffs(a), coeffs(b));
+    let u = p2.mul(&q0).sub(&p0.mul(&q2));
+    let res = u.mul(&u).sub(
+        &p2.mul(&q1)
+            .sub(&p1.mul(&q2))
+            .mul(&p1.mul(&q0).sub(&p0.mul(&q1))),
+    );
+    if res.is_zero() {
+        return Ok(());
+    }
+    let simple = res.real_roots() - res.gcd(&res.derivative()).real_roots_or_zero();
+    let transversal = points.iter().filter(|p| p.multiplicity == 1).count();
+    prop_assert!(
+        transversal >= simple,
+        "{} transversal points, {} simple real roots of {:?}",
+        transversal,
+        simple,
+        res
+    );
+    let m: u32 = points.iter().map(|p| p.multiplicity).sum();
+    prop_assert!(m as usize <= res.real_roots_with_multiplicity());
+    Ok(())
+}
+
+/// `ALGEBRAIC_CASES` or 256 (each case is microseconds).
+fn algebraic_cases() -> u32 {
+    std::env::var("ALGEBRAIC_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(256)
+}
+
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(algebraic_cases()))]
 
     /// A line through two integer points of a sphere meets it exactly there, at the
     /// chosen parameters, for any power-of-two scaling of the direction.
@@ -779,10 +870,23 @@ proptest! {
             std::array::from_fn(|i| mp(f(o[i])).add(&ti.mul(&mp(f(d[i])))))
         };
         let contains_zero = |v: &MpfrInterval| *v.lo() <= 0 && *v.hi() >= 0;
-        if let Ok(q) = QuadricForm::from_f64(a, [f(bc[0]), f(bc[1]), f(bc[2])], f(bc[3])) {
-            let r = intersect_line_quadric(o.map(f), d.map(f), &q).unwrap();
+        // x(t) = o + t·d as exact polynomials, for the independent root counts
+        let x: [Poly; 3] = std::array::from_fn(|i| Poly::linear(Rational::from(o[i]), Rational::from(d[i])));
+        let q = |v: i64| Rational::from(v);
+        if let Ok(quadric) = QuadricForm::from_f64(a, [f(bc[0]), f(bc[1]), f(bc[2])], f(bc[3])) {
+            let r = intersect_line_quadric(o.map(f), d.map(f), &quadric).unwrap();
             prop_assert_eq!(r.status, Status::Exact);
             prop_assert!(r.value.points().iter().map(|h| h.multiplicity).sum::<u32>() <= 2);
+            // F(t) = xᵀAx + 2b·x + c: its real roots counted by Sturm sequences
+            let aa = [[m[0], m[1], m[2]], [m[1], m[3], m[4]], [m[2], m[4], m[5]]];
+            let mut big_f = Poly::constant(q(bc[3]));
+            for i in 0..3 {
+                big_f = big_f.add(&x[i].scale(&q(2 * bc[i])));
+                for j in 0..3 {
+                    big_f = big_f.add(&x[i].mul(&x[j]).scale(&q(aa[i][j])));
+                }
+            }
+            count_matches(&r.value, &big_f)?;
             for h in r.value.points() {
                 let (lo, hi) = h.t.interval();
                 let ti = MpfrInterval::from_rational(&lo, P).hull(&MpfrInterval::from_rational(&hi, P));
@@ -802,6 +906,21 @@ proptest! {
             let r = intersect_line_torus(o.map(f), d.map(f), &torus).unwrap();
             prop_assert_eq!(r.status, Status::Exact);
             prop_assert!(r.value.points().iter().map(|h| h.multiplicity).sum::<u32>() <= 4);
+            // aa·(|x|² + R² − r²)² − 4R²(aa·|x|² − (x·a)²), or |x|² − r² when R = 0
+            let xx = x[0].mul(&x[0]).add(&x[1].mul(&x[1])).add(&x[2].mul(&x[2]));
+            let xa = x[0].scale(&q(axis[0])).add(&x[1].scale(&q(axis[1]))).add(&x[2].scale(&q(axis[2])));
+            let na: i64 = axis.iter().map(|v| v * v).sum();
+            let s = xx.add(&Poly::constant(q(big_r * big_r - small_r * small_r)));
+            if big_r == 0 {
+                count_matches(&r.value, &s)?;
+            } else {
+                let big_f = s.mul(&s).scale(&q(na)).sub(&xx.scale(&q(na)).sub(&xa.mul(&xa)).scale(&q(4 * big_r * big_r)));
+                // a spindle torus (r > R) is the points at distance r from the core
+                // circle: the quartic's inner sheet, where |x|² + R² − r² < 0, is not
+                // on it (src/ops/algebraic/line_surface.rs); counted by Tarski queries
+                let keep = if small_r > big_r { Some(&s) } else { None };
+                count_matches_where(&r.value, &big_f, keep)?;
+            }
             let aa = axis.iter().map(|x| f(x * x)).sum::<f64>();
             for h in r.value.points() {
                 let (lo, hi) = h.t.interval();
@@ -830,6 +949,7 @@ proptest! {
         if let ConicCut::Points(points) = &r.value {
             prop_assert!(r.complete);
             prop_assert!(points.iter().map(|p| p.multiplicity).sum::<u32>() <= 4);
+            resultant_bounds(a, b, points)?;
             for p in points {
                 let iv = |root: &geocert::certify::univariate::RealRoot| {
                     let (lo, hi) = root.interval();

@@ -1,0 +1,114 @@
+//! Independent truths for the curved tests (issue 21): cases solved in process through
+//! the case format (`geocert::io`), truths computed in MPFR far beyond any proof's
+//! precision, and the checks a strict reviewer asks for — strict containment of a
+//! truth in a box (no slack), one box per truth and one truth per box.
+#![allow(dead_code)]
+
+use geocert::io::{read_cases, solve_case, CaseResult};
+use rug::Float;
+
+/// The precision of the truths: far above any precision a proof here uses (the
+/// certifier escalates to a few hundred bits), so a truth is a point for every box.
+pub const BITS: u32 = 1024;
+
+/// A double (or any exact value) as a truth-precision float.
+pub fn fl<T>(v: T) -> Float
+where
+    Float: rug::Assign<T>,
+{
+    Float::with_val(BITS, v)
+}
+
+/// Solve one case given as JSON text, in process.
+pub fn solve(case: &str) -> CaseResult {
+    let mut read = read_cases(case);
+    assert_eq!(read.len(), 1, "one case: {case}");
+    solve_case(read.remove(0))
+}
+
+/// `CASES` scaled by `GEOCERT_CURVED_CASES` (a multiplier for long local runs; the
+/// default 1 keeps each family within its share of the suite's time).
+pub fn cases(default: usize) -> usize {
+    let k: usize = std::env::var("GEOCERT_CURVED_CASES")
+        .ok()
+        .and_then(|v| v.parse().ok())
+        .unwrap_or(1);
+    default * k.max(1)
+}
+
+/// True if `lo ≤ x ≤ hi` exactly (doubles compared with the MPFR value, no slack).
+pub fn holds(b: &[f64; 2], x: &Float) -> bool {
+    *x >= b[0] && *x <= b[1]
+}
+
+/// True if every coordinate of `point` lies in the box.
+pub fn box_holds(bx: &[[f64; 2]], point: &[Float]) -> bool {
+    bx.len() == point.len() && bx.iter().zip(point).all(|(b, x)| holds(b, x))
+}
+
+/// One box per truth and one truth per box: every box holds exactly one of the truths,
+/// and every truth lies in exactly one box. `Err` says which failed.
+pub fn one_to_one(boxes: &[Vec<[f64; 2]>], truths: &[Vec<Float>]) -> Result<(), String> {
+    if boxes.len() != truths.len() {
+        return Err(format!("{} boxes for {} truths", boxes.len(), truths.len()));
+    }
+    for (i, b) in boxes.iter().enumerate() {
+        let k = truths.iter().filter(|t| box_holds(b, t)).count();
+        if k != 1 {
+            return Err(format!("box {i} {b:?} holds {k} truths"));
+        }
+    }
+    for (i, t) in truths.iter().enumerate() {
+        let k = boxes.iter().filter(|b| box_holds(b, t)).count();
+        if k != 1 {
+            return Err(format!("truth {i} ({}) in {k} boxes", show(t)));
+        }
+    }
+    Ok(())
+}
+
+/// A truth point, short.
+pub fn show(t: &[Float]) -> String {
+    let parts: Vec<String> = t.iter().map(|x| format!("{:.20e}", x.to_f64())).collect();
+    format!("({})", parts.join(", "))
+}
+
+/// The `box` of every reported point.
+pub fn point_boxes(r: &CaseResult) -> Vec<Vec<[f64; 2]>> {
+    r.points
+        .iter()
+        .flatten()
+        .map(|p| p.bounds.clone())
+        .collect()
+}
+
+/// The `param_box` of object `k` of every reported point.
+pub fn param_boxes(r: &CaseResult, k: usize) -> Vec<Vec<[f64; 2]>> {
+    r.points
+        .iter()
+        .flatten()
+        .map(|p| p.param_box.as_ref().expect("param_box")[k].clone())
+        .collect()
+}
+
+/// The number of reported points.
+pub fn count(r: &CaseResult) -> usize {
+    r.points.as_ref().map_or(0, Vec::len)
+}
+
+/// `√x` of a truth.
+pub fn sqrt(x: Float) -> Float {
+    x.sqrt()
+}
+
+/// A number for the case format: the shortest text that reads back to the same double.
+pub fn num(x: f64) -> String {
+    let v = serde_json::to_value(x).expect("finite");
+    v.to_string()
+}
+
+/// A list of doubles for the case format.
+pub fn nums(xs: &[f64]) -> String {
+    let parts: Vec<String> = xs.iter().map(|&x| num(x)).collect();
+    format!("[{}]", parts.join(","))
+}
