@@ -11,6 +11,7 @@ pub mod nearest;
 pub mod polyhedron;
 pub mod project;
 pub mod space_curves;
+pub mod surface_surface;
 
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use polyhedron::Polyhedron;
