@@ -5,11 +5,13 @@
 //! no chain covers and certifies it in turn.
 
 use super::chain::{distance_bound, Anchor, ChainContext, Piece};
-use super::complete::{critical_roots, face_roots, RootBox, RootKind, Roots};
+use super::complete::{
+    critical_roots, domain_face_roots, hole_face_roots, RootBox, RootKind, Solved, DIRECTIONS,
+};
 use super::corrector::fixed_parameter_newton;
 use super::float::{settle, trace_all, trace_branch};
 use super::operand::Pair;
-use super::singular::{certify_singular, singular_box, SingularBox};
+use super::singular::{certify_singular, singular_region, SingularBox, REGION_SIZE};
 use super::trace::Tracer;
 use super::types::{
     CertifiedCurve, CertifiedSingularPoint, ChainBox, CurveEnd, CurvePoint, IntersectionCurve,
@@ -22,8 +24,10 @@ use crate::surface::Surface;
 
 /// Rounds of "trace what the completeness proof found unmatched".
 const MAX_ROUNDS: usize = 6;
-/// A singular box grows by critical cluster boxes of at most this size (relative to `L`).
+/// A singular region grows by critical cluster boxes of at most this size (relative to `L`).
 const GROWTH_LIMIT: f64 = 1e-2;
+/// The largest singular region (relative to `L`).
+const MAX_REGION: f64 = 0.07;
 
 struct State<'p, 'a, R, S> {
     ctx: ChainContext<'p, 'a, R, S>,
@@ -31,7 +35,7 @@ struct State<'p, 'a, R, S> {
     boxes: Vec<SingularBox>,
     arcs: Vec<(CertifiedCurve, Vec<Piece>)>,
     /// The roots of the height-critical system over the whole domain.
-    critical: Option<Roots>,
+    critical: Option<Solved>,
     reasons: Vec<String>,
     bits: u32,
 }
@@ -42,11 +46,12 @@ pub fn intersect<R: Surface, S: Surface>(
 ) -> Result<Certified<SurfaceIntersection>, GeomError> {
     let float = trace_all(pair);
     let mut state = State::new(pair);
-    if pair.options.completeness {
-        state.critical = Some(critical_roots(&state.ctx, &pair.options.certify)?);
-    }
     state.tracer.singular = float.singular_points;
-    state.certify_new_singular();
+    if pair.options.completeness {
+        state.solve_critical()?;
+    } else {
+        state.certify_new_singular();
+    }
     for c in float.curves {
         state.add_curve(c);
     }
@@ -87,46 +92,122 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
         }
     }
 
-    /// Certify the tracer's singular points that have no box yet. A box grows to hold
-    /// the `verified_singular` boxes of the height-critical system that meet it (the
-    /// critical system has a double root at a contact; its cluster box must lie in the
-    /// singular box to be accounted for).
-    fn certify_new_singular(&mut self) {
-        let opts = &self.ctx.pair.options.certify;
+    /// The height-critical system over the whole domain, with the first direction whose
+    /// undecided boxes all lie in singular regions (the regions are certified here, grown
+    /// by the critical system's clusters first).
+    fn solve_critical(&mut self) -> Result<(), GeomError> {
+        let opts = self.ctx.pair.options.certify.clone();
+        for (i, d) in DIRECTIONS.into_iter().enumerate() {
+            let solved = critical_roots(&self.ctx, d, &opts)?;
+            self.critical = Some(solved);
+            if i == 0 {
+                self.certify_new_singular();
+            } else {
+                self.regrow_all();
+            }
+            if self.critical_excused() {
+                return Ok(());
+            }
+        }
+        Ok(())
+    }
+
+    /// Every undecided box of the critical solve lies in a singular region.
+    fn critical_excused(&self) -> bool {
+        self.critical
+            .as_ref()
+            .is_none_or(|c| c.undecided.iter().all(|(b, _)| self.in_region(b)))
+    }
+
+    fn in_region(&self, b: &[Interval; 4]) -> bool {
+        self.boxes
+            .iter()
+            .any(|s| self.ctx.shifted_inside(b, &s.region, false))
+    }
+
+    /// The critical system's `verified_singular` clusters and undecided boxes (small
+    /// ones): a singular region grows to hold those that meet it.
+    fn clusters(&self) -> Vec<[Interval; 4]> {
         let limit = GROWTH_LIMIT * self.ctx.pair.length;
-        while self.boxes.len() < self.tracer.singular.len() {
-            let p = self.tracer.singular[self.boxes.len()];
-            let mut v = singular_box(&self.ctx, &p);
-            let clusters: Vec<[Interval; 4]> = self
-                .critical
-                .iter()
-                .flat_map(|c| &c.roots)
-                .filter(|r| r.status == Status::VerifiedSingular)
-                .map(|r| r.params)
-                .collect();
-            for _ in 0..4 {
-                let mut grown = false;
-                for c in &clusters {
-                    let c = self.ctx.shift_near(c, &v);
-                    let meets = (0..4).all(|k| !c[k].intersection(&v[k]).is_empty());
-                    let inside = (0..4).all(|k| c[k].is_subset(&v[k]));
-                    if meets && !inside && c.iter().all(|x| x.width() <= limit) {
-                        v = std::array::from_fn(|k| {
-                            let h = v[k].hull(&c[k]);
-                            let d = 0.05 * h.width();
-                            Interval::from_bounds(h.lo() - d, h.hi() + d)
-                        });
-                        grown = true;
-                    }
-                }
-                if !grown {
-                    break;
+        let Some(c) = &self.critical else {
+            return Vec::new();
+        };
+        c.roots
+            .iter()
+            .filter(|r| r.status == Status::VerifiedSingular)
+            .map(|r| r.params)
+            .chain(c.undecided.iter().map(|(b, _)| *b))
+            .filter(|b| b.iter().all(|x| x.width() <= limit))
+            .collect()
+    }
+
+    /// `v` grown to hold every cluster box that meets it.
+    fn grown(&self, mut v: [Interval; 4]) -> [Interval; 4] {
+        let clusters = self.clusters();
+        for _ in 0..4 {
+            let mut grown = false;
+            for c in &clusters {
+                let c = self.ctx.shift_near(c, &v);
+                let meets = (0..4).all(|k| !c[k].intersection(&v[k]).is_empty());
+                let inside = (0..4).all(|k| c[k].is_subset(&v[k]));
+                if meets && !inside {
+                    v = std::array::from_fn(|k| {
+                        let h = v[k].hull(&c[k]);
+                        let d = 0.05 * h.width();
+                        Interval::from_bounds(h.lo() - d, h.hi() + d)
+                    });
+                    grown = true;
                 }
             }
-            let b = certify_singular(&self.ctx, &p, v, opts);
-            self.ctx.singular.push(b.params);
+            if !grown {
+                break;
+            }
+        }
+        v
+    }
+
+    /// Certify the tracer's singular points that have no region yet.
+    fn certify_new_singular(&mut self) {
+        let opts = self.ctx.pair.options.certify.clone();
+        while self.boxes.len() < self.tracer.singular.len() {
+            let p = self.tracer.singular[self.boxes.len()];
+            let v = self.grown(singular_region(&self.ctx, &p, REGION_SIZE));
+            let b = certify_singular(&self.ctx, &p, v, REGION_SIZE, &opts);
+            self.ctx.singular.push(b.region);
             self.boxes.push(b);
         }
+    }
+
+    /// Regrow every region with the current clusters.
+    fn regrow_all(&mut self) {
+        for i in 0..self.boxes.len() {
+            let v = self.grown(self.boxes[i].region);
+            self.set_region(i, v);
+        }
+    }
+
+    /// Replace region `i` (it only ever grows: chains ending in the old one end in it).
+    fn set_region(&mut self, i: usize, v: [Interval; 4]) {
+        let pair = self.ctx.pair;
+        let b = &mut self.boxes[i];
+        b.region = v;
+        b.region_xyz = distance_bound(pair, &v, &self.tracer.singular[i].xyz).0;
+        self.ctx.singular[i] = v;
+    }
+
+    /// Region `i` at the next size (four times larger), holding the old one.
+    fn enlarge(&mut self, i: usize) -> bool {
+        let size = 4.0 * self.boxes[i].size;
+        if size > MAX_REGION {
+            return false;
+        }
+        let p = self.tracer.singular[i];
+        let old = self.boxes[i].region;
+        let v = singular_region(&self.ctx, &p, size);
+        let v = self.grown(std::array::from_fn(|k| v[k].hull(&old[k])));
+        self.boxes[i].size = size;
+        self.set_region(i, v);
+        true
     }
 
     /// Split a float curve at its singular points and certify each arc.
@@ -258,7 +339,7 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
             .zip(xs)
             .map(|(p, x)| {
                 let found = match p.singular {
-                    Some(i) => self.boxes.get(i).map(|b| b.params),
+                    Some(i) => self.boxes.get(i).map(|b| b.region),
                     None => self.ctx.vertex_box(pieces, x),
                 };
                 let b = found.unwrap_or_else(|| {
@@ -294,32 +375,27 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
         })
     }
 
-    /// The completeness proof (module doc of `complete`): solve, match, trace what is
-    /// unmatched, repeat.
+    /// The completeness proof (module doc of `complete`): the face systems of the domain
+    /// and of the singular regions (a region whose faces cannot be decided grows), then
+    /// match every root with a chain; trace from the unmatched ones, certify, repeat.
     fn prove_complete(&mut self) -> Result<bool, GeomError> {
-        let opts = self.ctx.pair.options.certify.clone();
-        let mut holes: Vec<[Interval; 4]> = self.boxes.iter().map(|b| b.params).collect();
-        let mut solved = self.solve(&holes, &opts)?;
+        let mut faces = self.faces()?;
         for _ in 0..MAX_ROUNDS {
-            let unmatched: Vec<RootBox> = solved
-                .roots
-                .iter()
+            let unmatched: Vec<RootBox> = self
+                .all_roots(&faces)
                 .filter(|r| !self.matched(r))
-                .cloned()
                 .collect();
             if unmatched.is_empty() {
                 break;
             }
             let before = (self.arcs.len(), self.boxes.len());
             for r in &unmatched {
-                if self
+                let traced = self
                     .arcs
                     .iter()
                     .any(|(_, pieces)| self.in_pieces(&r.params, pieces, false))
-                {
-                    continue;
-                }
-                if r.status == Status::VerifiedSingular {
+                    || self.near_traced(&r.estimate);
+                if traced || r.status == Status::VerifiedSingular {
                     continue;
                 }
                 let Ok(x) = settle(self.ctx.pair, self.ctx.pair.wrap(r.estimate)) else {
@@ -331,12 +407,14 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
             if (self.arcs.len(), self.boxes.len()) == before {
                 break;
             }
-            if self.boxes.len() > holes.len() {
-                holes = self.boxes.iter().map(|b| b.params).collect();
-                solved = self.solve(&holes, &opts)?;
+            if self.boxes.len() > before.1 {
+                faces = self.faces()?;
             }
         }
-        let unmatched: Vec<&RootBox> = solved.roots.iter().filter(|r| !self.matched(r)).collect();
+        let unmatched: Vec<RootBox> = self
+            .all_roots(&faces)
+            .filter(|r| !self.matched(r))
+            .collect();
         if let Some(r) = unmatched.first() {
             self.reasons.push(format!(
                 "{} root(s) of the completeness systems lie on no certified chain (first: {:?} \
@@ -347,27 +425,57 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
                 r.estimate
             ));
         }
-        let unmatched = unmatched.len();
-        self.reasons.extend(solved.reasons.iter().cloned());
-        self.bits = self.bits.max(solved.bits);
+        let critical_ok = self.critical_excused();
+        let faces_ok = faces
+            .undecided
+            .iter()
+            .all(|(b, kind)| *kind == RootKind::DomainFace && self.in_region(b));
+        for (ok, solved) in [
+            (critical_ok, self.critical.as_ref()),
+            (faces_ok, Some(&faces)),
+        ] {
+            if !ok {
+                if let Some(s) = solved {
+                    self.reasons.extend(s.reasons.iter().cloned());
+                }
+            }
+        }
+        self.bits = self
+            .bits
+            .max(faces.bits)
+            .max(self.critical.as_ref().map_or(53, |c| c.bits));
         let arcs_ok = self.arcs.iter().all(|(c, _)| c.status == Status::Verified);
-        Ok(solved.complete && unmatched == 0 && arcs_ok)
+        Ok(critical_ok && faces_ok && unmatched.is_empty() && arcs_ok)
     }
 
-    /// The face roots (domain faces and the faces of `holes`) with the critical roots.
-    fn solve(
-        &self,
-        holes: &[[Interval; 4]],
-        opts: &crate::certify::Options,
-    ) -> Result<Roots, GeomError> {
-        let mut faces = face_roots(&self.ctx, holes, opts)?;
-        if let Some(critical) = &self.critical {
-            faces.complete &= critical.complete;
-            faces.bits = faces.bits.max(critical.bits);
-            faces.reasons.extend(critical.reasons.iter().cloned());
-            faces.roots.extend(critical.roots.iter().cloned());
+    /// The face roots: the domain's faces outside the regions, and each region's faces,
+    /// a region growing (up to [`MAX_REGION`]) while its faces leave undecided boxes or
+    /// roots that are not proven simple.
+    fn faces(&mut self) -> Result<Solved, GeomError> {
+        let opts = self.ctx.pair.options.certify.clone();
+        let mut out = Solved::default();
+        for i in 0..self.boxes.len() {
+            loop {
+                let f = hole_face_roots(&self.ctx, &self.boxes[i].region, &opts)?;
+                let bad =
+                    !f.undecided.is_empty() || f.roots.iter().any(|r| r.status != Status::Verified);
+                if !bad || !self.enlarge(i) {
+                    out.extend(f);
+                    break;
+                }
+            }
         }
-        Ok(faces)
+        let holes: Vec<[Interval; 4]> = self.boxes.iter().map(|b| b.region).collect();
+        out.extend(domain_face_roots(&self.ctx, &holes, &opts)?);
+        Ok(out)
+    }
+
+    fn all_roots<'s>(&'s self, faces: &'s Solved) -> impl Iterator<Item = RootBox> + 's {
+        faces
+            .roots
+            .iter()
+            .chain(self.critical.iter().flat_map(|c| &c.roots))
+            .cloned()
     }
 
     /// A completeness root lies on a certified chain (or, off a singular box's face, in a
@@ -378,12 +486,31 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
             .iter()
             .filter(|(c, _)| c.status == Status::Verified)
             .any(|(_, pieces)| self.in_pieces(&r.params, pieces, false));
-        let in_hole = r.kind != RootKind::SingularFace
-            && self
-                .boxes
-                .iter()
-                .any(|b| self.ctx.shifted_inside(&r.params, &b.params, false));
+        let in_hole = r.kind != RootKind::SingularFace && self.in_region(&r.params);
         in_chain || in_hole
+    }
+
+    /// The point `x` lies on a traced curve (certified or not) within a few chord
+    /// tolerances: tracing from it would repeat that curve.
+    fn near_traced(&self, x: &[f64; 4]) -> bool {
+        let pair = self.ctx.pair;
+        let p = super::corrector::space_point(pair, &pair.wrap(*x));
+        let tol = 8.0 * super::frame::chord_tolerance(pair) + pair.delta_len();
+        self.arcs.iter().any(|(c, _)| {
+            c.curve.points.windows(2).any(|w| {
+                let (a, b) = (w[0].xyz, w[1].xyz);
+                let ab = crate::num::vector::sub(&b, &a);
+                let len2 = crate::num::vector::dot(&ab, &ab);
+                let lambda = if len2 > 0.0 {
+                    (crate::num::vector::dot(&crate::num::vector::sub(&p, &a), &ab) / len2)
+                        .clamp(0.0, 1.0)
+                } else {
+                    0.0
+                };
+                let foot: [f64; 3] = std::array::from_fn(|i| a[i] + lambda * ab[i]);
+                crate::num::vector::norm_f64(&crate::num::vector::sub(&p, &foot)) <= tol
+            })
+        })
     }
 
     fn in_pieces(&self, x: &[Interval; 4], pieces: &[Piece], interior: bool) -> bool {
@@ -427,6 +554,8 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
                     point,
                     param_box: b.params,
                     xyz_box: b.xyz,
+                    region: b.region,
+                    region_xyz: b.region_xyz,
                     status: b.status,
                     perturbation: b.perturbation,
                     branch_ends: ends(i),

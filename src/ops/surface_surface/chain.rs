@@ -69,6 +69,8 @@ pub struct ChainContext<'p, 'a, R, S> {
     pub singular: Vec<[Interval; 4]>,
 }
 
+/// How far a box's slab reaches beyond the segment's ends, relative to the segment.
+const OVERLAP: f64 = 1.0 / 32.0;
 /// The deepest splitting of one segment.
 const MAX_DEPTH: usize = 14;
 /// At most this many pieces approach a singular box.
@@ -223,15 +225,18 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
         }))
     }
 
-    /// One box over the segment: the slab of `x_j` from `a_j` to `b_j` widened by an
-    /// eighth on each side (not on `a`'s side when `exact_start`), the other coordinates
-    /// around the chord with a margin; proven by epsilon-inflation.
+    /// One box over the segment: the slab of `x_j` from `a_j` to `b_j` widened by
+    /// [`OVERLAP`] of it on each side (not on `a`'s side when `exact_start`), the other
+    /// coordinates around the chord with a margin of a quarter of their change; proven by
+    /// epsilon-inflation. (The overlap is small against the margins, so that the exit
+    /// face lies inside the next box even when the next segment is several times
+    /// shorter.)
     fn one_box(&self, a: &[f64; 4], b: &[f64; 4], j: usize, exact_start: bool) -> Option<Piece> {
         let (t0, t1) = (a[j], b[j]);
         if t0 == t1 {
             return None;
         }
-        let o = 0.125 * (t1 - t0).abs();
+        let o = OVERLAP * (t1 - t0).abs();
         let forward = t1 > t0;
         let entry = if exact_start {
             t0

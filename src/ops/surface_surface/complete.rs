@@ -1,31 +1,28 @@
 //! The completeness proof of surface ∩ surface (CERTIFICATION.md "Completeness").
 //!
 //! Let `D` be the search box of `[u, v, a, b]` (periodic parameters glued) and `V` the
-//! union of the singular boxes (their interiors are holes: `D' = D \ int V`). Every
-//! connected component `C` of the intersection `S ∩ D'` is either an arc whose ends lie
-//! on `∂D'` — a face of the domain or of a singular box — or a closed loop in the interior
-//! of `D'`. An arc's end is a root of a *face system*: the iso-curve of the face against
-//! the other surface (§5.2, [`CurveSurfaceSystem`]), three equations in three unknowns. A
-//! loop is compact, so the height `h = d·p` has a maximum on it, a root of the
-//! height-critical system ([`CriticalSystem`]); so is a point where the curve is not
-//! regular. Both kinds of roots are found — all of them, or the proof is incomplete — by
-//! the complete certified solver ([`certify_roots`], subdivision with exclusion; the
-//! critical system over the whole domain). Each root must lie in a box of a certified
-//! chain, or (not for a root on a singular box's face) in a singular box: then its
-//! component is that chain's, or it is not outside the holes. A root that matches
-//! nothing is a point of a component not yet traced: the caller traces from it and tries
-//! again. At a contact the critical system has a double root, which the solver encloses
-//! in a `verified_singular` box; the caller grows the singular box to hold it.
+//! union of the singular regions (boxes where the intersection is not resolved; their
+//! interiors are holes: `D' = D \ int V`). Every connected component `C` of the
+//! intersection `S ∩ D'` is either an arc whose ends lie on `∂D'` — on a face of the
+//! domain outside `int V`, or on a face of a singular region inside `D` — or a closed loop
+//! in the interior of `D'`. An arc's end is a root of a *face system*: the iso-curve of
+//! the face against the other surface (§5.2, [`CurveSurfaceSystem`]), three equations in
+//! three unknowns. A loop is compact, so the height `h = d·p` has a maximum on it, a root
+//! of the height-critical system ([`CriticalSystem`]) outside `V`; so is a point where
+//! the curve is not regular. Both kinds of roots are found by the complete certified
+//! solver ([`solve`], subdivision with exclusion); boxes it leaves undecided are harmless
+//! only inside `V`. Each root must lie in a box of a certified chain, or (a critical root,
+//! or one on a domain face) in `V`: then its component is that chain's, or it is not a
+//! point of `D'`. A root that matches nothing is a point of a component not yet traced:
+//! the caller traces from it and tries again.
 
 use super::chain::ChainContext;
 use super::equations::CriticalSystem;
 use crate::certificate::Status;
+use crate::certify::{solve, Root, System};
 use crate::curve::Curve;
 use crate::error::GeomError;
 use crate::num::Interval;
-use crate::ops::certified::{
-    certify_roots, curve_unknowns, surface_unknowns, CertifiedRoot, Unknowns,
-};
 use crate::ops::intersect::curve_surface::CurveSurfaceSystem;
 use crate::ops::project::IsoCurve;
 use crate::surface::Surface;
@@ -35,7 +32,7 @@ use crate::surface::Surface;
 pub enum RootKind {
     /// On a face of the domain.
     DomainFace,
-    /// On a face of a singular box.
+    /// On a face of a singular region.
     SingularFace,
     /// A height-critical point (or a non-regular point) of the curve.
     Critical,
@@ -50,31 +47,52 @@ pub struct RootBox {
     pub kind: RootKind,
 }
 
-/// The roots of all completeness systems and whether the solves were complete.
+/// What the solves of one kind proved: roots (existence proven), the boxes left
+/// undecided (any other root lies in one of them) and why.
 #[derive(Debug, Clone, Default)]
-pub struct Roots {
+pub struct Solved {
     pub roots: Vec<RootBox>,
-    pub complete: bool,
+    pub undecided: Vec<([Interval; 4], RootKind)>,
     pub reasons: Vec<String>,
     pub bits: u32,
 }
 
-impl Roots {
+impl Solved {
     fn absorb(
         &mut self,
-        c: crate::Certified<Vec<CertifiedRoot>>,
-        map: impl Fn(&CertifiedRoot) -> RootBox,
-        what: &str,
+        c: crate::Certified<crate::certify::Solutions>,
+        lift: impl Fn(&[Interval]) -> [Interval; 4],
+        kind: RootKind,
     ) {
         self.bits = self.bits.max(c.bits);
-        if !c.complete {
-            self.complete = false;
-            self.reasons.push(format!(
-                "{what}: {}",
-                c.reason.unwrap_or_else(|| "incomplete".into())
-            ));
+        let v = c.value;
+        for r in v.roots.iter().chain(&v.boundary_roots) {
+            self.roots.push(root_box(r, &lift, kind));
         }
-        self.roots.extend(c.value.iter().map(map));
+        for u in &v.undecided {
+            self.undecided.push((lift(&u.enclosure), kind));
+        }
+        if let Some(first) = v.undecided.first() {
+            self.reasons.push(format!("{kind:?}: {}", first.reason));
+        }
+    }
+
+    pub fn extend(&mut self, other: Solved) {
+        self.roots.extend(other.roots);
+        self.undecided.extend(other.undecided);
+        self.reasons.extend(other.reasons);
+        self.bits = self.bits.max(other.bits);
+    }
+}
+
+fn root_box(r: &Root, lift: &impl Fn(&[Interval]) -> [Interval; 4], kind: RootKind) -> RootBox {
+    let points: Vec<Interval> = r.estimate.iter().map(|&x| Interval::point(x)).collect();
+    let est = lift(&points);
+    RootBox {
+        params: lift(&r.enclosure),
+        estimate: est.map(|x| x.midpoint()),
+        status: r.status,
+        kind,
     }
 }
 
@@ -82,44 +100,101 @@ impl Roots {
 /// normal to one of them makes its roots non-isolated).
 pub const DIRECTIONS: [[f64; 3]; 3] = [[2.0, 3.0, 6.0], [-6.0, 2.0, 3.0], [3.0, -6.0, 2.0]];
 
-/// Roots of the face systems of the domain's bounded faces and of the singular boxes'
-/// faces (those inside the domain).
-pub fn face_roots<R: Surface, S: Surface>(
+/// The roots of the height-critical system with direction `d` over the search box.
+pub fn critical_roots<R: Surface, S: Surface>(
+    ctx: &ChainContext<'_, '_, R, S>,
+    d: [f64; 3],
+    opts: &crate::certify::Options,
+) -> Result<Solved, GeomError> {
+    let sys = CriticalSystem {
+        r: ctx.pair.r,
+        s: ctx.pair.s,
+        direction: d,
+    };
+    let mut out = Solved {
+        bits: 53,
+        ..Solved::default()
+    };
+    let c = solve(&sys, &ctx.search, opts)?;
+    out.absorb(c, |x| std::array::from_fn(|k| x[k]), RootKind::Critical);
+    Ok(out)
+}
+
+/// The roots of the face systems of the domain's bounded faces outside the holes.
+pub fn domain_face_roots<R: Surface, S: Surface>(
     ctx: &ChainContext<'_, '_, R, S>,
     holes: &[[Interval; 4]],
     opts: &crate::certify::Options,
-) -> Result<Roots, GeomError> {
+) -> Result<Solved, GeomError> {
     let pair = ctx.pair;
-    let mut out = Roots {
-        complete: true,
+    let mut out = Solved {
         bits: 53,
-        ..Roots::default()
+        ..Solved::default()
     };
     for k in 0..4 {
         if pair.coords[k].periodic {
             continue;
         }
         for bound in ctx.search[k] {
-            let c = face_solve(ctx, k, bound, None, opts)?;
-            out.absorb(
-                c,
-                |r| root_box(k, bound, r, RootKind::DomainFace),
-                "domain face",
-            );
+            let face: [[f64; 2]; 4] = std::array::from_fn(|i| {
+                if i == k {
+                    [bound, bound]
+                } else {
+                    ctx.search[i]
+                }
+            });
+            let mut pieces = vec![face];
+            for h in holes.iter().filter(|h| h[k].contains(bound)) {
+                pieces = pieces.iter().flat_map(|p| subtract(p, h, k)).collect();
+            }
+            for p in pieces {
+                face_solve(ctx, k, &p, RootKind::DomainFace, opts, &mut out)?;
+            }
         }
     }
-    for hole in holes {
+    Ok(out)
+}
+
+/// The roots of the face systems of one hole's faces inside the domain (a hole spanning a
+/// whole period of a periodic coordinate has no faces in it).
+pub fn hole_face_roots<R: Surface, S: Surface>(
+    ctx: &ChainContext<'_, '_, R, S>,
+    h: &[Interval; 4],
+    opts: &crate::certify::Options,
+) -> Result<Solved, GeomError> {
+    let pair = ctx.pair;
+    let mut out = Solved {
+        bits: 53,
+        ..Solved::default()
+    };
+    {
         for k in 0..4 {
-            if covers_period(ctx, k, &hole[k]) {
+            if covers_period(ctx, k, &h[k]) {
                 continue;
             }
-            for bound in [hole[k].lo(), hole[k].hi()] {
-                let c = face_solve(ctx, k, bound, Some(hole), opts)?;
-                out.absorb(
-                    c,
-                    |r| root_box(k, bound, r, RootKind::SingularFace),
-                    "singular box face",
-                );
+            for bound in [h[k].lo(), h[k].hi()] {
+                let c = &pair.coords[k];
+                if !c.periodic && !(ctx.search[k][0] < bound && bound < ctx.search[k][1]) {
+                    continue;
+                }
+                let face: Option<Vec<[f64; 2]>> = (0..4)
+                    .map(|i| {
+                        if i == k {
+                            return Some([bound, bound]);
+                        }
+                        let (lo, hi) = (h[i].lo(), h[i].hi());
+                        if pair.coords[i].periodic {
+                            Some([lo, hi])
+                        } else {
+                            let [a, b] = ctx.search[i];
+                            (lo.max(a) <= hi.min(b)).then_some([lo.max(a), hi.min(b)])
+                        }
+                    })
+                    .collect();
+                if let Some(f) = face {
+                    let f: [[f64; 2]; 4] = std::array::from_fn(|i| f[i]);
+                    face_solve(ctx, k, &f, RootKind::SingularFace, opts, &mut out)?;
+                }
             }
         }
     }
@@ -132,120 +207,84 @@ pub fn covers_period<R, S>(ctx: &ChainContext<'_, '_, R, S>, k: usize, x: &Inter
     c.periodic && x.lo() <= c.lo && x.hi() >= c.hi
 }
 
-/// The face `x_k = bound`: the iso-curve of the surface owning `x_k` against the other
-/// surface, over the search box (or over the hole's extent).
+/// The face box `f` (coordinate `k` fixed) minus the hole's interior, in the other three
+/// coordinates: up to six boxes.
+fn subtract(f: &[[f64; 2]; 4], h: &[Interval; 4], k: usize) -> Vec<[[f64; 2]; 4]> {
+    let others = (0..4).filter(|&i| i != k);
+    let disjoint = others
+        .clone()
+        .any(|i| h[i].hi() <= f[i][0] || h[i].lo() >= f[i][1]);
+    if disjoint {
+        return vec![*f];
+    }
+    let mut out = Vec::new();
+    let mut rest = *f;
+    for i in others {
+        let [lo, hi] = rest[i];
+        if h[i].lo() > lo {
+            let mut piece = rest;
+            piece[i] = [lo, h[i].lo()];
+            out.push(piece);
+        }
+        if h[i].hi() < hi {
+            let mut piece = rest;
+            piece[i] = [h[i].hi(), hi];
+            out.push(piece);
+        }
+        rest[i] = [lo.max(h[i].lo()), hi.min(h[i].hi())];
+    }
+    out
+}
+
+/// Solve the face `x_k = f[k]` over the box `f`: the iso-curve of the surface owning `x_k`
+/// (running in that surface's other parameter) against the other surface.
 fn face_solve<R: Surface, S: Surface>(
     ctx: &ChainContext<'_, '_, R, S>,
     k: usize,
-    bound: f64,
-    hole: Option<&[Interval; 4]>,
+    f: &[[f64; 2]; 4],
+    kind: RootKind,
     opts: &crate::certify::Options,
-) -> Result<crate::Certified<Vec<CertifiedRoot>>, GeomError> {
+    out: &mut Solved,
+) -> Result<(), GeomError> {
     let pair = ctx.pair;
-    // The iso-curve's running parameter is the other parameter of the same surface.
+    let bound = f[k][0];
+    let (own, other) = if k < 2 { (0, 2) } else { (2, 0) };
+    let running = own + (1 - (k % 2));
+    let domain = [f[other], f[other + 1], f[running]];
+    let lift = |x: &[Interval]| -> [Interval; 4] {
+        let mut p = [Interval::point(bound); 4];
+        p[other] = x[0];
+        p[other + 1] = x[1];
+        p[running] = x[2];
+        p
+    };
     let direction = 1 - (k % 2);
-    if k < 2 {
-        let iso = IsoCurve {
+    let c = if k < 2 {
+        let curve = IsoCurve {
             surface: pair.r,
             direction,
             fixed: bound,
         };
-        solve_face(pair.s, &iso, hole.map(|h| [h[2], h[3], h[1 - k]]), opts)
+        solve_face(pair.s, &curve, &domain, opts)?
     } else {
-        let iso = IsoCurve {
+        let curve = IsoCurve {
             surface: pair.s,
             direction,
             fixed: bound,
         };
-        solve_face(
-            pair.r,
-            &iso,
-            hole.map(|h| [h[0], h[1], h[2 + 1 - (k - 2)]]),
-            opts,
-        )
-    }
+        solve_face(pair.r, &curve, &domain, opts)?
+    };
+    out.absorb(c, lift, kind);
+    Ok(())
 }
 
 fn solve_face<Q: Surface, C: Curve<3>>(
     surface: &Q,
     curve: &C,
-    within: Option<[Interval; 3]>,
+    domain: &[[f64; 2]; 3],
     opts: &crate::certify::Options,
-) -> Result<crate::Certified<Vec<CertifiedRoot>>, GeomError> {
+) -> Result<crate::Certified<crate::certify::Solutions>, GeomError> {
     let sys = CurveSurfaceSystem { surface, curve };
-    let unknowns = match within {
-        None => Unknowns::concat(&[surface_unknowns(surface), curve_unknowns(curve)]),
-        Some(w) => Unknowns {
-            domain: w.iter().map(|x| [x.lo(), x.hi()]).collect(),
-            periodic: vec![false; 3],
-            rounded: vec![false; 3],
-        },
-    };
-    certify_roots(&sys, &unknowns, &[], opts)
-}
-
-/// A face root `(p, q, t)` (surface parameters, then the iso-curve's) in `[u, v, a, b]`.
-fn root_box(k: usize, bound: f64, r: &CertifiedRoot, kind: RootKind) -> RootBox {
-    let (e, x) = (&r.enclosure, &r.params);
-    // the owning surface's pair: (fixed k, running t); the other surface: (e0, e1)
-    let mut params = [Interval::ZERO; 4];
-    let mut estimate = [0.0; 4];
-    let (own, other) = if k < 2 { (0, 2) } else { (2, 0) };
-    params[other] = e[0];
-    params[other + 1] = e[1];
-    estimate[other] = x[0];
-    estimate[other + 1] = x[1];
-    let running = own + (1 - (k % 2));
-    params[k] = Interval::point(bound);
-    estimate[k] = bound;
-    params[running] = e[2];
-    estimate[running] = x[2];
-    RootBox {
-        params,
-        estimate,
-        status: r.status,
-        kind,
-    }
-}
-
-/// Roots of the height-critical system over the search box, with the first direction of
-/// [`DIRECTIONS`] whose solve is complete.
-pub fn critical_roots<R: Surface, S: Surface>(
-    ctx: &ChainContext<'_, '_, R, S>,
-    opts: &crate::certify::Options,
-) -> Result<Roots, GeomError> {
-    let mut last = Roots::default();
-    for d in DIRECTIONS {
-        let sys = CriticalSystem {
-            r: ctx.pair.r,
-            s: ctx.pair.s,
-            direction: d,
-        };
-        let mut out = Roots {
-            complete: true,
-            bits: 53,
-            ..Roots::default()
-        };
-        let unknowns = Unknowns {
-            domain: ctx.search.to_vec(),
-            periodic: ctx.pair.coords.iter().map(|c| c.periodic).collect(),
-            rounded: vec![false; 4],
-        };
-        let c = certify_roots(&sys, &unknowns, &[], opts)?;
-        out.absorb(c, critical_box, "height-critical system");
-        if out.complete {
-            return Ok(out);
-        }
-        last = out;
-    }
-    Ok(last)
-}
-
-fn critical_box(r: &CertifiedRoot) -> RootBox {
-    RootBox {
-        params: std::array::from_fn(|k| r.enclosure[k]),
-        estimate: std::array::from_fn(|k| r.params[k]),
-        status: r.status,
-        kind: RootKind::Critical,
-    }
+    debug_assert_eq!(sys.dim(), 3);
+    solve(&sys, domain, opts)
 }

@@ -1,10 +1,12 @@
 //! Certified singular points (OPERATIONS.md §9.5; CERTIFICATION.md `verified_singular`).
 //!
-//! A singular point of the float path gets a small box `V` of `[u, v, a, b]` (about
-//! `10⁻⁶ L` across in space; a parameter whose derivative vanishes there — the angle at a
-//! cone's apex — spans its whole period). Inside `V` the intersection is not resolved:
-//! chains end in its interior, and the completeness proof treats it as a hole whose faces
-//! are boundary. What is proven about `V` is a contact of a perturbed input:
+//! A singular point of the float path gets a region `V` of `[u, v, a, b]` (a box about
+//! `ρ L` across in space, `ρ` from [`REGION_SIZE`] up, grown where its faces cannot be
+//! decided; a parameter whose derivative vanishes there — the angle at a cone's apex —
+//! spans its whole period). Inside `V` the intersection is not resolved: chains end in
+//! its interior, and the completeness proof treats it as a hole whose faces are
+//! boundary. What is proven in `V`, in a tight box of its own, is a contact of a
+//! perturbed input:
 //!
 //! * the common-normal system ([`CommonNormalSystem`]) has a verified root `(x*, λ*)` with
 //!   `x* ∈ V`: moving `s` by `λ* N_s(a*, b*)`, of length at most the reported
@@ -25,14 +27,20 @@ use crate::num::vector::{cross, norm_f64, norm_sq};
 use crate::num::{Interval, Real};
 use crate::surface::{AnyImplicit, Implicit, Surface};
 
-/// The space size of a singular box, relative to `L`.
-pub const SINGULAR_SIZE: f64 = 1e-6;
+/// The first space size of a singular region, relative to `L`.
+pub const REGION_SIZE: f64 = 1e-3;
 
-/// A certified singular box.
+/// A certified singular point.
 #[derive(Debug, Clone)]
 pub struct SingularBox {
+    /// The tight box of the proof (the region when there is no proof).
     pub params: [Interval; 4],
     pub xyz: [Interval; 3],
+    /// The region `V` in which the intersection is not resolved.
+    pub region: [Interval; 4],
+    pub region_xyz: [Interval; 3],
+    /// The region's size relative to `L` (grown by the caller).
+    pub size: f64,
     pub status: Status,
     pub perturbation: Option<f64>,
     pub reason: Option<String>,
@@ -60,10 +68,11 @@ impl<Q: Surface> System for ImplicitCriticalSystem<'_, Q> {
     }
 }
 
-/// The box `V` around the singular point `p` (module doc).
-pub fn singular_box<R: Surface, S: Surface>(
+/// The region `V` of space size `size·L` around the singular point `p` (module doc).
+pub fn singular_region<R: Surface, S: Surface>(
     ctx: &ChainContext<'_, '_, R, S>,
     p: &SingularPoint,
+    size: f64,
 ) -> [Interval; 4] {
     let pair = ctx.pair;
     let x = p.params;
@@ -76,7 +85,7 @@ pub fn singular_box<R: Surface, S: Surface>(
         norm_f64(&js[2]),
     ];
     let top = speed.iter().copied().fold(0.0, f64::max);
-    let rho = SINGULAR_SIZE * pair.length;
+    let rho = size * pair.length;
     std::array::from_fn(|k| {
         let c = &pair.coords[k];
         if speed[k] <= 1e-9 * top {
@@ -93,31 +102,39 @@ pub fn singular_box<R: Surface, S: Surface>(
     })
 }
 
-/// Certify the singular point `p` (module doc) in the box `v` (around it, from
-/// [`singular_box`], possibly grown).
+/// Certify the singular point `p` (module doc) with the region `v` (from
+/// [`singular_region`] of size `size`, possibly grown).
 pub fn certify_singular<R: Surface, S: Surface>(
     ctx: &ChainContext<'_, '_, R, S>,
     p: &SingularPoint,
     v: [Interval; 4],
+    size: f64,
     opts: &crate::certify::Options,
 ) -> SingularBox {
     let pair = ctx.pair;
-    let (xyz, _) = distance_bound(pair, &v, &p.xyz);
+    let (region_xyz, _) = distance_bound(pair, &v, &p.xyz);
+    let found = |w: [Interval; 4], e: f64, reason: Option<String>| SingularBox {
+        params: w,
+        xyz: distance_bound(pair, &w, &p.xyz).0,
+        region: v,
+        region_xyz,
+        size,
+        status: Status::VerifiedSingular,
+        perturbation: Some(e),
+        reason,
+    };
     let undecided = |reason: String| SingularBox {
         params: v,
-        xyz,
+        xyz: region_xyz,
+        region: v,
+        region_xyz,
+        size,
         status: Status::Undecided,
         perturbation: None,
         reason: Some(reason),
     };
     match common_normal_proof(ctx, p, &v, opts) {
-        Proof::Touch(e) => SingularBox {
-            params: v,
-            xyz,
-            status: Status::VerifiedSingular,
-            perturbation: Some(e),
-            reason: None,
-        },
+        Proof::Touch(w, e) => found(w, e, None),
         Proof::Apart(gap) => undecided(format!(
             "near contact: the surfaces are proven not to touch at the common normal in the box \
              (gap enclosed in [{:e}, {:e}]); the curve's topology near it is not resolved",
@@ -125,17 +142,15 @@ pub fn certify_singular<R: Surface, S: Surface>(
             gap.hi()
         )),
         Proof::None => match implicit_proof(ctx, p, &v, opts) {
-            Proof::Touch(e) => SingularBox {
-                params: v,
-                xyz,
-                status: Status::VerifiedSingular,
-                perturbation: Some(e),
-                reason: Some(
+            Proof::Touch(w, e) => found(
+                w,
+                e,
+                Some(
                     "a singular point of the implicit surface offset by at most the perturbation \
                      (in units of its implicit function)"
                         .into(),
                 ),
-            },
+            ),
             Proof::Apart(gap) => undecided(format!(
                 "near singular: the critical value of the implicit function is proven non-zero \
                  ([{:e}, {:e}]); the curve's topology near it is not resolved",
@@ -148,8 +163,8 @@ pub fn certify_singular<R: Surface, S: Surface>(
 }
 
 enum Proof {
-    /// A contact of an input perturbed by at most this much.
-    Touch(f64),
+    /// A contact of an input perturbed by at most this much, in this box.
+    Touch([Interval; 4], f64),
     /// Proven apart: the gap's enclosure.
     Apart(Interval),
     None,
@@ -192,7 +207,7 @@ fn common_normal_proof<R: Surface, S: Surface>(
     }
     let jw = pair.s.jet(&w[2], &w[3], 1);
     let n = norm_sq(&cross(&jw[1], &jw[2])).sqrt();
-    Proof::Touch((lam.abs() * n).hi())
+    Proof::Touch(w, (lam.abs() * n).hi())
 }
 
 fn implicit_proof<R: Surface, S: Surface>(
@@ -203,10 +218,18 @@ fn implicit_proof<R: Surface, S: Surface>(
 ) -> Proof {
     let pair = ctx.pair;
     let x = p.params;
+    // the proof is about the parametric surface's two parameters; the other pair of the
+    // box is the region's
     if let Some(g) = &pair.implicit[1] {
-        critical_proof(pair.r, g, [x[0], x[1]], [v[0], v[1]], opts)
+        match critical_proof(pair.r, g, [x[0], x[1]], [v[0], v[1]], opts) {
+            Proof::Touch([a, b, ..], e) => Proof::Touch([a, b, v[2], v[3]], e),
+            other => other,
+        }
     } else if let Some(g) = &pair.implicit[0] {
-        critical_proof(pair.s, g, [x[2], x[3]], [v[2], v[3]], opts)
+        match critical_proof(pair.s, g, [x[2], x[3]], [v[2], v[3]], opts) {
+            Proof::Touch([a, b, ..], e) => Proof::Touch([v[0], v[1], a, b], e),
+            other => other,
+        }
     } else {
         Proof::None
     }
@@ -230,7 +253,7 @@ fn critical_proof<Q: Surface>(
     let point = q.jet(&e[0], &e[1], 0).swap_remove(0);
     let phi = g.implicit_jet(&point, 0).value;
     if phi.contains_zero() {
-        Proof::Touch(phi.mag())
+        Proof::Touch([e[0], e[1], e[0], e[1]], phi.mag())
     } else {
         Proof::Apart(phi)
     }

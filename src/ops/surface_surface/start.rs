@@ -68,7 +68,7 @@ pub fn starting_points<R: Surface, S: Surface>(
     let mut contacts = Vec::new();
     for (x, tangent) in found {
         let f = LocalFrame::at(pair, x, 1.0, None);
-        if tangent || f.sin < sin_tan {
+        if tangent || !(f.sin >= sin_tan) {
             contacts.push(x);
         } else if !starts.iter().any(|s: &Start| same(pair, &s.x, &x)) {
             starts.push(Start {

@@ -72,7 +72,7 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
         let p0 = space_point(pair, &start);
         let mut points = vec![(start, None)];
         let mut frame = LocalFrame::at(pair, start, sigma, None);
-        if frame.sin < sin_sw {
+        if !(frame.sin >= sin_sw) {
             return Direction {
                 points,
                 end: CurveEnd::Tangency,

@@ -135,15 +135,22 @@ pub struct CertifiedCurve {
 pub struct CertifiedSingularPoint {
     /// The float estimate.
     pub point: SingularPoint,
-    /// The box `[u, v, a, b]` the singular point's proof is about; chains that end at
-    /// this point end inside it.
+    /// The certified box `[u, v, a, b]` of the singular point (for `VerifiedSingular`:
+    /// the box of its proof, see `status`; else the region).
     pub param_box: [Interval; 4],
-    /// An enclosure of the box's points in space.
+    /// An enclosure of that box's points in space.
     pub xyz_box: [Interval; 3],
-    /// `VerifiedSingular`: a unique common normal of the two surfaces lies in the box,
-    /// and the surfaces touch there after moving one of them along it by at most
-    /// `perturbation` (a contact of a perturbed input); what the intersection does inside
-    /// the box is not resolved. `Undecided` when that could not be proven.
+    /// The region `[u, v, a, b]` around it in which the intersection is not resolved:
+    /// chains that end at this point end inside it, and every component of the
+    /// intersection not covered by a chain meets it.
+    pub region: [Interval; 4],
+    /// An enclosure of the region in space.
+    pub region_xyz: [Interval; 3],
+    /// `VerifiedSingular`: the common-normal system has a verified root in `param_box`,
+    /// so the surfaces touch there after moving one of them along that normal by at most
+    /// `perturbation` (a contact of a perturbed input; for a singular point of a surface,
+    /// such as a cone's apex, the implicit form offset by at most `perturbation`).
+    /// `Undecided` when that could not be proven (reason).
     pub status: Status,
     /// Bound of the displacement that makes the surfaces touch in the box.
     pub perturbation: Option<f64>,
