@@ -124,6 +124,19 @@ impl<T> Certified<T> {
         }
     }
 
+    /// The same certificate for another value.
+    pub fn clone_with<U>(&self, value: U) -> Certified<U> {
+        Certified {
+            value,
+            status: self.status,
+            complete: self.complete,
+            arithmetic: self.arithmetic,
+            bits: self.bits,
+            reason: self.reason.clone(),
+            perturbation: self.perturbation,
+        }
+    }
+
     /// Transform the value, keeping the certificate.
     pub fn map<U>(self, f: impl FnOnce(T) -> U) -> Certified<U> {
         Certified {

@@ -4,13 +4,16 @@
 
 use geocert::num::round::{next_down, next_up};
 use geocert::ops::classify::Side;
-use geocert::ops::closed_surface::{classify_point_surface, ClosedSurface};
+use geocert::ops::closed_surface::classify_point_surface;
+use geocert::surface::quadrics::{Ellipsoid, Sphere};
+use geocert::surface::torus::Torus;
+use geocert::surface::AnySurface;
 use geocert::Status;
 use proptest::prelude::*;
 use rug::Float;
 
-fn side(p: [f64; 3], s: &ClosedSurface) -> Side {
-    let c = classify_point_surface(&p, s);
+fn side(p: [f64; 3], s: &AnySurface) -> Side {
+    let c = classify_point_surface(&p, s).expect("a closed shell");
     assert_eq!(c.status, Status::Exact);
     assert!(c.complete);
     c.value
@@ -18,10 +21,7 @@ fn side(p: [f64; 3], s: &ClosedSurface) -> Side {
 
 #[test]
 fn sphere_on_and_one_ulp_either_side() {
-    let s = ClosedSurface::Sphere {
-        center: [0.0; 3],
-        radius: 1.0,
-    };
+    let s = AnySurface::Sphere(Sphere::new([0.0; 3], 1.0, None, None).unwrap());
     assert_eq!(side([1.0, 0.0, 0.0], &s), Side::On);
     assert_eq!(side([next_up(1.0), 0.0, 0.0], &s), Side::Outside);
     assert_eq!(side([next_down(1.0), 0.0, 0.0], &s), Side::Inside);
@@ -40,10 +40,8 @@ fn sphere_on_and_one_ulp_either_side() {
 #[test]
 fn huge_and_tiny_spheres_are_decided() {
     for scale in [1e150, 1e-150, 1e300, 1e-300] {
-        let s = ClosedSurface::Sphere {
-            center: [0.0, -scale, 0.0],
-            radius: 4.0 * scale,
-        };
+        let s =
+            AnySurface::Sphere(Sphere::new([0.0, -scale, 0.0], 4.0 * scale, None, None).unwrap());
         // 4·scale is exact (a power of two times a double), so the point is on.
         assert_eq!(side([4.0 * scale, -scale, 0.0], &s), Side::On, "{scale}");
         assert_eq!(side([next_up(4.0 * scale), -scale, 0.0], &s), Side::Outside);
@@ -55,12 +53,15 @@ fn huge_and_tiny_spheres_are_decided() {
 fn ellipsoid_vertices_on_a_tilted_frame() {
     // Axis (1, 1, 0): the default X is +z (the least aligned coordinate vector), so
     // the vertex along X is centre + a·(0, 0, 1).
-    let s = ClosedSurface::Ellipsoid {
-        center: [1.0, 2.0, 3.0],
-        radii: [3.0, 2.0, 1.0],
-        axis: [1.0, 1.0, 0.0],
-        reference: None,
-    };
+    let s = AnySurface::Ellipsoid(
+        Ellipsoid::new(
+            [1.0, 2.0, 3.0],
+            [3.0, 2.0, 1.0],
+            Some([1.0, 1.0, 0.0]),
+            None,
+        )
+        .unwrap(),
+    );
     assert_eq!(side([1.0, 2.0, 6.0], &s), Side::On);
     assert_eq!(side([1.0, 2.0, next_up(6.0)], &s), Side::Outside);
     assert_eq!(side([1.0, 2.0, next_down(6.0)], &s), Side::Inside);
@@ -69,12 +70,15 @@ fn ellipsoid_vertices_on_a_tilted_frame() {
     assert_eq!(side([2.5, 3.5, 3.0], &s), Side::Outside);
     // With ref = y the X axis is +y: the vertex centre + 3·(0, 1, 0)·... lies off the
     // Z axis (Z ⟂ y fails: ref is made orthogonal, X = (−1, 1, 0)/√2, Y = z).
-    let r = ClosedSurface::Ellipsoid {
-        center: [0.0; 3],
-        radii: [3.0, 2.0, 1.0],
-        axis: [0.0, 0.0, 1.0],
-        reference: Some([0.0, 5.0, 0.0]),
-    };
+    let r = AnySurface::Ellipsoid(
+        Ellipsoid::new(
+            [0.0; 3],
+            [3.0, 2.0, 1.0],
+            Some([0.0, 0.0, 1.0]),
+            Some([0.0, 5.0, 0.0]),
+        )
+        .unwrap(),
+    );
     assert_eq!(side([0.0, 3.0, 0.0], &r), Side::On);
     assert_eq!(side([2.0, 0.0, 0.0], &r), Side::On);
     assert_eq!(side([0.0, 0.0, 1.0], &r), Side::On);
@@ -82,12 +86,7 @@ fn ellipsoid_vertices_on_a_tilted_frame() {
 
 #[test]
 fn torus_on_inside_and_outside() {
-    let t = ClosedSurface::Torus {
-        center: [0.0; 3],
-        major: 3.0,
-        minor: 1.0,
-        axis: [0.0, 0.0, 1.0],
-    };
+    let t = AnySurface::Torus(Torus::new([0.0; 3], 3.0, 1.0, [0.0, 0.0, 1.0], None).unwrap());
     for p in [
         [4.0, 0.0, 0.0],
         [2.0, 0.0, 0.0],
@@ -102,12 +101,7 @@ fn torus_on_inside_and_outside() {
     assert_eq!(side([next_up(4.0), 0.0, 0.0], &t), Side::Outside);
     assert_eq!(side([next_down(2.0), 0.0, 0.0], &t), Side::Outside);
     // Axis y, unnormalised: the tube circle of the point (0, 1, 3) has h = 1, ρ² = 10.
-    let ty = ClosedSurface::Torus {
-        center: [0.0; 3],
-        major: 3.0,
-        minor: 1.0,
-        axis: [0.0, 7.0, 0.0],
-    };
+    let ty = AnySurface::Torus(Torus::new([0.0; 3], 3.0, 1.0, [0.0, 7.0, 0.0], None).unwrap());
     assert_eq!(side([0.0, 1.0, 3.0], &ty), Side::On);
     assert_eq!(side([0.0, 0.5, 3.0], &ty), Side::Inside);
 }
@@ -152,7 +146,7 @@ proptest! {
         c in [coordinate(), coordinate(), coordinate()],
         r in (1i64..1000, -20i32..20).prop_map(|(m, e)| m as f64 * 2f64.powi(e)),
     ) {
-        let s = ClosedSurface::Sphere { center: c, radius: r };
+        let s = AnySurface::Sphere(Sphere::new(c, r, None, None).unwrap());
         prop_assert_eq!(side(p, &s), expected(mpfr_sign_sphere(p, c, r)));
     }
 
@@ -162,7 +156,7 @@ proptest! {
         big in (1i64..100, -4i32..4).prop_map(|(m, e)| m as f64 * 2f64.powi(e)),
         small in (1i64..100, -4i32..4).prop_map(|(m, e)| m as f64 * 2f64.powi(e)),
     ) {
-        let t = ClosedSurface::Torus { center: [0.0; 3], major: big, minor: small, axis: [0.0, 0.0, 1.0] };
+        let t = AnySurface::Torus(Torus::new([0.0; 3], big, small, [0.0, 0.0, 1.0], None).unwrap());
         prop_assert_eq!(side(p, &t), expected(mpfr_sign_torus(p, big, small)));
     }
 
@@ -178,7 +172,7 @@ proptest! {
         let c = c.map(|x| (x * 64.0).round() * s);
         let p = [c[0] + 3.0 * k as f64 * s, c[1] + 4.0 * k as f64 * s, c[2]];
         prop_assume!(p[0] - c[0] == 3.0 * k as f64 * s && p[1] - c[1] == 4.0 * k as f64 * s);
-        let sphere = ClosedSurface::Sphere { center: c, radius: 5.0 * k as f64 * s };
+        let sphere = AnySurface::Sphere(Sphere::new(c, 5.0 * k as f64 * s, None, None).unwrap());
         prop_assert_eq!(side(p, &sphere), Side::On);
     }
 }

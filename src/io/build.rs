@@ -1,10 +1,10 @@
-//! Specs of the case format → validated geometric objects (CASES.md "Objects",
+//! Specs of the case format → the typed shapes of the front door (CASES.md "Objects",
 //! "Numbers"), with every error's field path prefixed by the object's place in the
 //! case (`objects[1].dir[2]`).
 //!
-//! The coordinate type is chosen per case: `f64` when every number is a double (the
-//! certified, filtered path), `rug::Rational` when a string holds a number that no
-//! double equals, or when `options.exact` asks for the exact rationals.
+//! A linear object keeps its numbers exactly: doubles when every number is one (the
+//! certified, filtered kernel), `rug::Rational` when a string holds a number that no
+//! double equals. A query point likewise.
 
 use nalgebra::{Vector2, Vector3};
 use rug::Rational;
@@ -13,15 +13,16 @@ use super::number::Num;
 use super::objects::{
     Line2Spec, LineSpec, ObjectSpec, PlaneSpec, PolyhedronSpec, Segment2Spec, SegmentSpec,
 };
+use super::shapes::PlaneShape;
 use crate::error::GeomError;
-use crate::geom::{Coord, Line, Line2, Linear, Linear2, Plane, Segment, Segment2};
+use crate::geom::{Coord, Line, Line2, Plane, Segment, Segment2};
 use crate::num::parse::parse_rational;
 use crate::num::round::round_rational;
-use crate::ops::Polyhedron;
+use crate::ops::{Linear, LinearObject, Polyhedron, Position, Shape};
 
 /// Why an object could not be built in the requested coordinate type.
 #[derive(Debug)]
-pub(crate) enum BuildError {
+enum BuildError {
     /// The input is invalid.
     Geom(GeomError),
     /// A number is exact text that no double equals: use rationals.
@@ -35,7 +36,7 @@ impl From<GeomError> for BuildError {
 }
 
 /// A coordinate type that case numbers convert into exactly.
-pub(crate) trait FromNum: Coord + Sized {
+trait FromNum: Coord + Sized {
     fn from_num(n: &Num, field: &str) -> Result<Self, BuildError>;
 }
 
@@ -66,7 +67,7 @@ impl FromNum for Rational {
     }
 }
 
-pub(crate) fn vec3<T: FromNum>(v: &[Num], field: &str) -> Result<Vector3<T>, BuildError> {
+fn vec3<T: FromNum>(v: &[Num], field: &str) -> Result<Vector3<T>, BuildError> {
     if v.len() != 3 {
         return Err(GeomError::Format {
             field: field.to_string(),
@@ -94,88 +95,89 @@ fn range<T: FromNum>(r: &Option<[Num; 2]>, field: &str) -> Result<Option<[T; 2]>
         .transpose()
 }
 
-/// A linear object, validated.
-#[derive(Debug, Clone)]
-pub(crate) enum Object<T: Coord> {
-    Line(Line<T>),
-    Segment(Segment<T>),
-    Plane(Plane<T>),
-    Line2(Line2<T>),
-    Segment2(Segment2<T>),
-}
-
-impl<T: Coord> Object<T> {
-    /// The object as a 3D line or segment.
-    pub fn linear(&self) -> Option<Linear<'_, T>> {
-        match self {
-            Object::Line(l) => Some(Linear::Line(l)),
-            Object::Segment(s) => Some(Linear::Segment(s)),
-            _ => None,
-        }
-    }
-    /// The object as a 2D line or segment.
-    pub fn linear2(&self) -> Option<Linear2<'_, T>> {
-        match self {
-            Object::Line2(l) => Some(Linear2::Line(l)),
-            Object::Segment2(s) => Some(Linear2::Segment(s)),
-            _ => None,
-        }
-    }
-    pub fn plane(&self) -> Option<&Plane<T>> {
-        match self {
-            Object::Plane(p) => Some(p),
-            _ => None,
-        }
-    }
-}
-
-/// Validate one object; errors name fields below `prefix`.
-pub(crate) fn build<T: FromNum>(spec: &ObjectSpec, prefix: &str) -> Result<Object<T>, BuildError> {
-    build_inner(spec).map_err(|e| match e {
-        BuildError::Geom(g) => BuildError::Geom(g.at(prefix)),
-        other => other,
+/// One object of a case as a shape; errors name fields below `prefix`.
+pub fn shape(spec: &ObjectSpec, prefix: &str) -> Result<Shape, GeomError> {
+    let at = |e: GeomError| e.at(prefix);
+    Ok(match spec {
+        ObjectSpec::Curve3(c) => Shape::Curve(c.build().map_err(at)?),
+        ObjectSpec::Curve2(c) => match c.build().map_err(at)? {
+            PlaneShape::Curve(c) => Shape::Curve2(c),
+            PlaneShape::Conic(c) => Shape::Conic2(c),
+        },
+        ObjectSpec::Surface(s) => Shape::Surface(s.build().map_err(at)?),
+        ObjectSpec::Polyhedron(p) => Shape::Polyhedron(polyhedron(p).map_err(at)?),
+        linear => Shape::Linear(match linear_object::<f64>(linear) {
+            Ok(o) => Linear::Double(o),
+            Err(BuildError::NeedsRational) => match linear_object::<Rational>(linear) {
+                Ok(o) => Linear::Exact(o),
+                Err(BuildError::Geom(e)) => return Err(at(e)),
+                Err(BuildError::NeedsRational) => return Err(at(unreachable_rational())),
+            },
+            Err(BuildError::Geom(e)) => return Err(at(e)),
+        }),
     })
 }
 
-fn build_inner<T: FromNum>(spec: &ObjectSpec) -> Result<Object<T>, BuildError> {
+/// A query point: doubles, or rationals when a coordinate is exact text that no double
+/// equals; errors name `field[i]`.
+pub fn position(v: &[Num], field: &str) -> Result<Position, GeomError> {
+    let doubles: Result<Vec<f64>, BuildError> = v
+        .iter()
+        .enumerate()
+        .map(|(i, n)| f64::from_num(n, &format!("{field}[{i}]")))
+        .collect();
+    match doubles {
+        Ok(d) => Ok(Position::Double(d)),
+        Err(BuildError::Geom(e)) => Err(e),
+        Err(BuildError::NeedsRational) => v
+            .iter()
+            .enumerate()
+            .map(
+                |(i, n)| match Rational::from_num(n, &format!("{field}[{i}]")) {
+                    Ok(q) => Ok(q),
+                    Err(BuildError::Geom(e)) => Err(e),
+                    Err(BuildError::NeedsRational) => Err(unreachable_rational()),
+                },
+            )
+            .collect::<Result<_, _>>()
+            .map(Position::Exact),
+    }
+}
+
+fn linear_object<T: FromNum>(spec: &ObjectSpec) -> Result<LinearObject<T>, BuildError> {
     Ok(match spec {
         ObjectSpec::Line(LineSpec {
             origin,
             dir,
             range: r,
-        }) => Object::Line(Line::with_range(
+        }) => LinearObject::Line(Line::with_range(
             vec3(origin, "origin")?,
             vec3(dir, "dir")?,
             range(r, "range")?,
         )?),
         ObjectSpec::Segment(SegmentSpec { a, b }) => {
-            Object::Segment(Segment::new(vec3(a, "a")?, vec3(b, "b")?)?)
+            LinearObject::Segment(Segment::new(vec3(a, "a")?, vec3(b, "b")?)?)
         }
-        ObjectSpec::Plane(p) => Object::Plane(plane(p)?),
+        ObjectSpec::Plane(p) => LinearObject::Plane(plane(p)?),
         ObjectSpec::Line2(Line2Spec {
             origin,
             dir,
             range: r,
-        }) => Object::Line2(Line2::with_range(
+        }) => LinearObject::Line2(Line2::with_range(
             vec2(origin, "origin")?,
             vec2(dir, "dir")?,
             range(r, "range")?,
         )?),
         ObjectSpec::Segment2(Segment2Spec { a, b }) => {
-            Object::Segment2(Segment2::new(vec2(a, "a")?, vec2(b, "b")?)?)
+            LinearObject::Segment2(Segment2::new(vec2(a, "a")?, vec2(b, "b")?)?)
         }
-        ObjectSpec::Polyhedron(_) => {
+        ObjectSpec::Polyhedron(_)
+        | ObjectSpec::Curve3(_)
+        | ObjectSpec::Curve2(_)
+        | ObjectSpec::Surface(_) => {
             return Err(GeomError::Unsupported {
                 field: "type".into(),
-                reason: "a polyhedron is used as the `shell` of `classify` in this build".into(),
-            }
-            .into())
-        }
-        // Curved objects are solved by `io::curved`, never by the linear kernel.
-        ObjectSpec::Curve3(_) | ObjectSpec::Curve2(_) | ObjectSpec::Surface(_) => {
-            return Err(GeomError::Unsupported {
-                field: "type".into(),
-                reason: "this operation does not take curved objects in this build".into(),
+                reason: "not a linear object".into(),
             }
             .into())
         }
@@ -231,8 +233,8 @@ fn plane<T: FromNum>(p: &PlaneSpec) -> Result<Plane<T>, BuildError> {
     }
 }
 
-/// Validate a polyhedron (exact vertices); errors name fields below `prefix`.
-pub(crate) fn polyhedron(spec: &PolyhedronSpec, prefix: &str) -> Result<Polyhedron, GeomError> {
+/// Validate a polyhedron (exact vertices); errors name fields below the object.
+fn polyhedron(spec: &PolyhedronSpec) -> Result<Polyhedron, GeomError> {
     let vertices = spec
         .vertices
         .iter()
@@ -244,13 +246,12 @@ pub(crate) fn polyhedron(spec: &PolyhedronSpec, prefix: &str) -> Result<Polyhedr
             })?;
             Ok([v[0].clone(), v[1].clone(), v[2].clone()])
         })
-        .collect::<Result<Vec<_>, GeomError>>()
-        .map_err(|e| e.at(prefix))?;
-    Polyhedron::new(vertices, spec.faces.clone()).map_err(|e| e.at(prefix))
+        .collect::<Result<Vec<_>, GeomError>>()?;
+    Polyhedron::new(vertices, spec.faces.clone())
 }
 
 /// Rationals take every number; kept as a typed error rather than a panic.
-pub(crate) fn unreachable_rational() -> GeomError {
+fn unreachable_rational() -> GeomError {
     GeomError::Unsupported {
         field: String::new(),
         reason: "internal: a rational coordinate was refused".into(),

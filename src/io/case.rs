@@ -1,6 +1,7 @@
 //! Cases of the command line (spec/CASES.md "Cases"): reading a file of cases and
 //! turning each into a typed [`Case`], or an error naming the offending field.
 
+use super::de::deserialize_at;
 use super::number::{Double, Num};
 use super::objects::{parse_object, ObjectSpec};
 use crate::error::GeomError;
@@ -133,26 +134,6 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
         })
     });
     ReadCase { id, case }
-}
-
-/// Deserialize a JSON value, reporting errors with the field path below `prefix`.
-pub fn deserialize_at<T: serde::de::DeserializeOwned>(
-    value: serde_json::Value,
-    prefix: &str,
-) -> Result<T, GeomError> {
-    serde_path_to_error::deserialize::<_, T>(value).map_err(|e| {
-        let path = e.path().to_string();
-        let field = match (prefix.is_empty(), path == ".") {
-            (_, true) => prefix.to_string(),
-            (true, false) => path,
-            (false, false) if path.starts_with('[') => format!("{prefix}{path}"),
-            (false, false) => format!("{prefix}.{path}"),
-        };
-        GeomError::Format {
-            field,
-            message: e.into_inner().to_string(),
-        }
-    })
 }
 
 /// Read every case of a file: a JSON array of cases, or JSON Lines (one case per

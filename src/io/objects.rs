@@ -2,7 +2,7 @@
 //! geometric objects (zero directions, collinear plane vectors, ...) happens when a
 //! case is solved, with the field path prefixed by the object's position.
 
-use super::case::deserialize_at;
+use super::de::{deserialize_at, take_type};
 use super::number::Num;
 use crate::error::GeomError;
 use serde::Deserialize;
@@ -129,27 +129,7 @@ impl ObjectSpec {
 pub fn parse_object(mut value: serde_json::Value, prefix: &str) -> Result<ObjectSpec, GeomError> {
     let original = value.clone();
     let type_field = format!("{prefix}.type");
-    let Some(map) = value.as_object_mut() else {
-        return Err(GeomError::Format {
-            field: prefix.to_string(),
-            message: "expected an object with a \"type\" field".into(),
-        });
-    };
-    let type_name = match map.remove("type") {
-        Some(serde_json::Value::String(s)) => s,
-        Some(_) => {
-            return Err(GeomError::Format {
-                field: type_field,
-                message: "expected a string".into(),
-            })
-        }
-        None => {
-            return Err(GeomError::Format {
-                field: type_field,
-                message: "missing field `type`".into(),
-            })
-        }
-    };
+    let type_name = take_type(&mut value, prefix)?;
     match type_name.as_str() {
         "line" => deserialize_at(value, prefix).map(ObjectSpec::Line),
         "segment" => deserialize_at(value, prefix).map(ObjectSpec::Segment),

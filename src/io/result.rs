@@ -92,10 +92,16 @@ pub struct ErrorOut {
     pub message: String,
 }
 
+/// The version of the result format written in every record's `format` field
+/// (docs/FORMAT.md); it changes only when a field changes meaning or is removed.
+pub const FORMAT_VERSION: u32 = 1;
+
 /// One line of output.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct CaseResult {
     pub id: Value,
+    /// The result format's version ([`FORMAT_VERSION`]).
+    pub format: u32,
     pub status: &'static str,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub kind: Option<&'static str>,
@@ -149,6 +155,7 @@ impl CaseResult {
     pub fn error(id: Value, error: &GeomError) -> Self {
         CaseResult {
             id,
+            format: FORMAT_VERSION,
             status: "error",
             kind: None,
             complete: None,
@@ -174,6 +181,7 @@ impl CaseResult {
     pub fn certified<T>(id: Value, kind: &'static str, certified: &Certified<T>) -> Self {
         CaseResult {
             id,
+            format: FORMAT_VERSION,
             status: certified.status.as_str(),
             kind: Some(kind),
             complete: Some(certified.complete),

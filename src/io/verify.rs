@@ -18,7 +18,8 @@
 use rug::Rational;
 use serde::Deserialize;
 
-use super::case::{deserialize_at, ReadCase};
+use super::case::ReadCase;
+use super::de::deserialize_at;
 use super::number::{Double, Num};
 use super::result::{CaseResult, ClaimOut, PointOut};
 use super::solve::solve_case;

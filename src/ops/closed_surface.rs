@@ -14,30 +14,11 @@
 use super::classify::Side;
 use crate::certificate::{Arithmetic, Certified};
 use crate::num::ring::{cross3, dot3, sub3, Field, Ring, V3};
+use crate::surface::quadrics::{Ellipsoid, Sphere};
+use crate::surface::torus::Torus;
+use crate::surface::{AnySurface, Surface};
 use rug::Rational;
 use std::cmp::Ordering;
-
-/// A closed analytic surface as given in a case (CASES.md fields; doubles taken exactly).
-#[derive(Debug, Clone, PartialEq)]
-pub enum ClosedSurface {
-    Sphere {
-        center: [f64; 3],
-        radius: f64,
-    },
-    /// Semi-axes `a, b, c` along the frame's X, Y, Z.
-    Ellipsoid {
-        center: [f64; 3],
-        radii: [f64; 3],
-        axis: [f64; 3],
-        reference: Option<[f64; 3]>,
-    },
-    Torus {
-        center: [f64; 3],
-        major: f64,
-        minor: f64,
-        axis: [f64; 3],
-    },
-}
 
 fn q(x: f64) -> Rational {
     <Rational as Field>::from_f64(x)
@@ -73,56 +54,82 @@ pub fn frame_x_unnormalised(axis: &[f64; 3], reference: Option<&[f64; 3]>) -> V3
     std::array::from_fn(|i| e[i].minus(&along.times(&z[i])))
 }
 
-/// `F(p)` of the surface's implicit form (§1.4, §1.6), exactly.
-pub fn implicit_value_exact(surface: &ClosedSurface, p: &[f64; 3]) -> Rational {
-    let p = qv(p);
-    match surface {
-        ClosedSurface::Sphere { center, radius } => {
-            let w = sub3(&p, &qv(center));
-            dot3(&w, &w).minus(&q(*radius).times(&q(*radius)))
+/// The surface is a whole sphere, ellipsoid or torus (its domain is the natural one),
+/// so a closed shell with an inside.
+pub fn is_closed_shell(surface: &AnySurface) -> bool {
+    // The same shape built afresh has the natural domain.
+    let natural = match surface {
+        AnySurface::Sphere(s) => {
+            let f = s.frame();
+            Sphere::new(f.origin(), s.radius(), Some(f.axis()), f.reference())
+                .map(AnySurface::Sphere)
         }
-        ClosedSurface::Ellipsoid {
-            center,
-            radii,
-            axis,
-            reference,
-        } => {
-            let w = sub3(&p, &qv(center));
-            let z = qv(axis);
-            let x = frame_x_unnormalised(axis, reference.as_ref());
+        AnySurface::Ellipsoid(e) => {
+            let f = e.frame();
+            Ellipsoid::new(f.origin(), e.semi_axes(), Some(f.axis()), f.reference())
+                .map(AnySurface::Ellipsoid)
+        }
+        AnySurface::Torus(t) => {
+            let f = t.frame();
+            Torus::new(f.origin(), t.major(), t.minor(), f.axis(), f.reference())
+                .map(AnySurface::Torus)
+        }
+        _ => return false,
+    };
+    natural.is_ok_and(|n| n.domain() == surface.domain())
+}
+
+/// `F(p)` of the surface's implicit form (§1.4, §1.6), exactly; `None` for surfaces
+/// other than spheres, ellipsoids and tori.
+pub fn implicit_value_exact(surface: &AnySurface, p: &[f64; 3]) -> Option<Rational> {
+    let p = qv(p);
+    Some(match surface {
+        AnySurface::Sphere(s) => {
+            let w = sub3(&p, &qv(&s.frame().origin()));
+            let r = q(s.radius());
+            dot3(&w, &w).minus(&r.times(&r))
+        }
+        AnySurface::Ellipsoid(e) => {
+            let frame = e.frame();
+            let w = sub3(&p, &qv(&frame.origin()));
+            let z = qv(&frame.axis());
+            let x = frame_x_unnormalised(&frame.axis(), frame.reference().as_ref());
             let y = cross3(&z, &x);
             let mut f = Rational::from(-1);
-            for (dir, r) in [x, y, z].iter().zip(radii) {
+            for (dir, r) in [x, y, z].iter().zip(e.semi_axes()) {
                 let c = dot3(&w, dir);
-                let r2 = q(*r).times(&q(*r));
+                let r2 = q(r).times(&q(r));
                 f = f.plus(&c.times(&c).divide(&dot3(dir, dir).times(&r2)));
             }
             f
         }
-        ClosedSurface::Torus {
-            center,
-            major,
-            minor,
-            axis,
-        } => {
-            let w = sub3(&p, &qv(center));
-            let z = qv(axis);
+        AnySurface::Torus(t) => {
+            let frame = t.frame();
+            let w = sub3(&p, &qv(&frame.origin()));
+            let z = qv(&frame.axis());
             let rho2 = dot3(&w, &w);
             let h = dot3(&w, &z);
             let h2 = h.times(&h).divide(&dot3(&z, &z));
-            let (big2, small2) = (q(*major).times(&q(*major)), q(*minor).times(&q(*minor)));
+            let (big2, small2) = (
+                q(t.major()).times(&q(t.major())),
+                q(t.minor()).times(&q(t.minor())),
+            );
             let s = rho2.plus(&big2).minus(&small2);
             let four_r2 = Rational::from(4).times(&big2);
             s.times(&s).minus(&four_r2.times(&rho2.minus(&h2)))
         }
-    }
+        _ => return None,
+    })
 }
 
-/// The side of `p` relative to the closed surface, decided exactly (`Status::Exact`,
-/// complete). The surface data must be valid (positive radii, non-zero axis); the case
-/// reader checks that.
-pub fn classify_point_surface(p: &[f64; 3], surface: &ClosedSurface) -> Certified<Side> {
-    let f = implicit_value_exact(surface, p);
+/// The side of `p` relative to a closed sphere, ellipsoid or torus, decided exactly
+/// (`Status::Exact`, complete); `None` when the surface is not such a closed shell
+/// ([`is_closed_shell`]).
+pub fn classify_point_surface(p: &[f64; 3], surface: &AnySurface) -> Option<Certified<Side>> {
+    if !is_closed_shell(surface) {
+        return None;
+    }
+    let f = implicit_value_exact(surface, p)?;
     let bits = f
         .numer()
         .significant_bits()
@@ -132,7 +139,7 @@ pub fn classify_point_surface(p: &[f64; 3], surface: &ClosedSurface) -> Certifie
         Ordering::Equal => Side::On,
         Ordering::Greater => Side::Outside,
     };
-    Certified::exact(side, Arithmetic::Rational, bits)
+    Some(Certified::exact(side, Arithmetic::Rational, bits))
 }
 
 /// The feet of `p` on the sphere `|x − c| = r` (§3.4 in closed form): the critical

@@ -1,17 +1,43 @@
 //! Operations on shapes (ARCHITECTURE.md layer `ops/`): each operation's float solver
 //! and its certificate live together here.
+//!
+//! # The front door
+//!
+//! [`intersect`], [`project`] and [`classify`] take typed [`Shape`]s and return a
+//! [`crate::Certified`] [`Answer`]; they choose the ladder (linear kernel → exact
+//! algebraic → numeric certified) and seed the solvers. The command line's JSON
+//! reader only translates into these types and back.
+//!
+//! # Naming scheme
+//!
+//! Operation functions are named `[operation]_[shape]_[shape]`: `intersect_line_plane`,
+//! `intersect_plane_plane`, `intersect_three_planes`, `intersect_curve_surface`,
+//! `intersect_curve2_curve2` (plane curves), `project_point_curve`,
+//! `project_point_surface`, `classify_point_polyhedron`, `nearest_point_curve`.
+//! Suffixes: `_f64` (plain doubles, no proof: the speed floor), `_exact` (exact
+//! rationals in and out), `_batch` (many cases per call, same answers). The certified
+//! entry point has no suffix.
 
 pub mod algebraic;
+pub mod answer;
 pub mod certified;
 pub mod classify;
 pub mod closed_surface;
 pub mod float;
+mod front;
 pub mod intersect;
+mod linear;
 pub mod nearest;
+pub mod options;
 pub mod polyhedron;
 pub mod project;
+pub mod shape;
 pub mod space_curves;
 pub mod surface_surface;
 
+pub use answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
+pub use front::{classify, intersect, project};
+pub use options::{Options, ProjectOptions};
 pub use polyhedron::Polyhedron;
+pub use shape::{Linear, LinearObject, Position, Shape};

@@ -14,7 +14,7 @@ use crate::error::GeomError;
 use crate::num::ring::{cross3, dot3, sub3, Field, Ring, V3};
 
 /// A validated closed shell with planar faces, in exact rationals.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Polyhedron {
     vertices: Vec<V3<Rational>>,
     faces: Vec<Face>,
@@ -22,7 +22,7 @@ pub struct Polyhedron {
 
 /// A planar face: its vertex indices (counter-clockwise seen from outside), its exact
 /// outward normal `n` (Newell's sum, `|n|` = twice the area) and offset `n·v₀`.
-#[derive(Debug, Clone)]
+#[derive(Debug, Clone, PartialEq)]
 pub struct Face {
     pub indices: Vec<usize>,
     pub normal: V3<Rational>,

@@ -15,37 +15,12 @@ pub mod surface;
 
 pub use curve::{curve3_from_json, parse_curve2, parse_curve3, Curve2Spec, Curve3Spec, PlaneShape};
 
-use super::case::deserialize_at;
+use super::de::deserialize_at;
+pub use super::de::take_type;
 use crate::error::GeomError;
 use serde::de::DeserializeOwned;
 use serde::Serialize;
 use serde_json::Value;
-
-/// Remove and return the `type` of an object value, naming errors `field.type`.
-pub fn take_type(value: &mut Value, field: &str) -> Result<String, GeomError> {
-    let type_field = if field.is_empty() {
-        "type".to_string()
-    } else {
-        format!("{field}.type")
-    };
-    let Some(map) = value.as_object_mut() else {
-        return Err(GeomError::Format {
-            field: field.to_string(),
-            message: "expected an object with a \"type\" field".into(),
-        });
-    };
-    match map.remove("type") {
-        Some(Value::String(s)) => Ok(s),
-        Some(_) => Err(GeomError::Format {
-            field: type_field,
-            message: "expected a string".into(),
-        }),
-        None => Err(GeomError::Format {
-            field: type_field,
-            message: "missing field `type`".into(),
-        }),
-    }
-}
 
 /// Refuse numbers written as strings anywhere in `value` (curved objects take
 /// doubles): `unsupported`, naming the path of the first one.

@@ -17,7 +17,7 @@
 use serde::{Deserialize, Serialize};
 
 use crate::error::{require_finite_all, GeomError};
-use crate::io::case::deserialize_at;
+use crate::io::de::{deserialize_at, take_type};
 use crate::surface::bezier::BezierSurface;
 use crate::surface::frame::Frame;
 use crate::surface::nurbs::NurbsSurface;
@@ -247,28 +247,8 @@ pub fn parse_surface(value: &serde_json::Value, field: &str) -> Result<SurfaceSp
     } else {
         format!("{field}.type")
     };
-    let Some(map) = value.as_object_mut() else {
-        return Err(GeomError::Format {
-            field: field.to_string(),
-            message: "expected an object with a \"type\" field".into(),
-        });
-    };
-    let name = match map.remove("type") {
-        Some(serde_json::Value::String(s)) => s,
-        Some(_) => {
-            return Err(GeomError::Format {
-                field: type_field,
-                message: "expected a string".into(),
-            })
-        }
-        None => {
-            return Err(GeomError::Format {
-                field: type_field,
-                message: "missing field `type`".into(),
-            })
-        }
-    };
-    if name == "plane" && (map.contains_key("normal") || map.contains_key("d")) {
+    let name = take_type(&mut value, field)?;
+    if name == "plane" && (value.get("normal").is_some() || value.get("d").is_some()) {
         return Err(GeomError::Unsupported {
             field: field.to_string(),
             reason: "a plane given by normal and d has no parametrisation; \

@@ -71,6 +71,12 @@ pub struct TorusData {
 }
 
 impl TorusData {
+    /// The exact data of a torus of the model.
+    pub fn of_torus(t: &crate::surface::torus::Torus) -> Result<TorusData, GeomError> {
+        let f = t.frame();
+        TorusData::new(f.origin(), f.axis(), t.major(), t.minor())
+    }
+
     /// Validate and take the doubles exactly.
     pub fn new(
         center: [f64; 3],

@@ -20,6 +20,7 @@ mod conic_conic;
 mod exact;
 mod line;
 mod line_surface;
+pub(crate) mod pairs;
 mod quadric;
 
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};

@@ -202,6 +202,22 @@ pub(super) fn framed<const D: usize>(
 }
 
 impl QuadricForm<3> {
+    /// The exact implicit form of a sphere or an ellipsoid of the model (its frame and
+    /// radii taken exactly, §1.6); `None` for other surfaces or when the data give no
+    /// exact form.
+    pub fn of_surface(surface: &crate::surface::AnySurface) -> Option<Self> {
+        use crate::surface::AnySurface;
+        match surface {
+            AnySurface::Sphere(s) => QuadricForm::sphere(s.frame().origin(), s.radius()).ok(),
+            AnySurface::Ellipsoid(e) => {
+                let f = e.frame();
+                QuadricForm::ellipsoid_in_frame(f.origin(), f.axis(), f.reference(), e.semi_axes())
+                    .ok()
+            }
+            _ => None,
+        }
+    }
+
     /// Sphere `|x − c|² − r² = 0` (§1.6), always exact.
     pub fn sphere(center: [f64; 3], radius: f64) -> Result<Self, GeomError> {
         let c = exact_vec("center", &center)?;

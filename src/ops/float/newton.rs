@@ -23,6 +23,41 @@ pub struct Coordinate {
 }
 
 impl Coordinate {
+    /// The unknown `[lo, hi]` with the §12 stopping tolerance `ε·max(range, 1)` (12.2)
+    /// and a scan margin of one range.
+    pub fn new(lo: f64, hi: f64, periodic: bool, precision: &super::Precision) -> Coordinate {
+        let range = hi - lo;
+        Coordinate {
+            lo,
+            hi,
+            periodic,
+            eps: precision.eps * range.max(1.0),
+            margin: range,
+        }
+    }
+
+    /// The parameter of a curve.
+    pub fn of_curve<const D: usize>(
+        c: &impl crate::curve::Curve<D>,
+        precision: &super::Precision,
+    ) -> Coordinate {
+        let (lo, hi) = c.domain();
+        Coordinate::new(lo, hi, c.is_closed(), precision)
+    }
+
+    /// The two parameters of a surface.
+    pub fn of_surface(
+        s: &impl crate::surface::Surface,
+        precision: &super::Precision,
+    ) -> [Coordinate; 2] {
+        let (u, v) = s.domain();
+        let closed = s.is_closed();
+        [
+            Coordinate::new(u[0], u[1], closed[0], precision),
+            Coordinate::new(v[0], v[1], closed[1], precision),
+        ]
+    }
+
     /// Wrap a periodic value into `[lo, hi)`; other values are returned unchanged.
     pub fn wrap(&self, x: f64) -> f64 {
         if !self.periodic {

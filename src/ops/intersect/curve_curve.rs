@@ -53,7 +53,10 @@ pub fn intersect_curve_curve_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
     b_samples: &[(f64, f64)],
     precision: &Precision,
 ) -> Vec<CurveCurvePoint<D>> {
-    let coords = [coordinate(a, precision), coordinate(b, precision)];
+    let coords = [
+        Coordinate::of_curve(a, precision),
+        Coordinate::of_curve(b, precision),
+    ];
     let sin_sw = precision.sin_switch();
     let mut length = 0.0f64;
     let mut guesses = Vec::new();
@@ -129,17 +132,6 @@ pub fn intersect_curve_curve_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
     points.extend(merge(tangent, &coords, precision.delta_tan()));
     points.sort_by(|p, q| p.params[0].total_cmp(&q.params[0]));
     points
-}
-
-fn coordinate<const D: usize>(c: &impl Curve<D>, precision: &Precision) -> Coordinate {
-    let (lo, hi) = c.domain();
-    Coordinate {
-        lo,
-        hi,
-        periodic: c.is_closed(),
-        eps: precision.eps * (hi - lo).max(1.0),
-        margin: hi - lo,
-    }
 }
 
 /// `|ĉ₁' × ĉ₂'|` at `(t₁, t₂)`, from the Gram determinant (any dimension).

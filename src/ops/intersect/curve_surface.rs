@@ -88,9 +88,9 @@ pub fn intersect_curve_surface_f64<S: Surface, C: Curve<3>>(
     let (t0, t1) = curve.domain();
     let closed = surface.is_closed();
     let coords = [
-        coordinate(u0, u1, closed[0], precision),
-        coordinate(v0, v1, closed[1], precision),
-        coordinate(t0, t1, curve.is_closed(), precision),
+        Coordinate::new(u0, u1, closed[0], precision),
+        Coordinate::new(v0, v1, closed[1], precision),
+        Coordinate::new(t0, t1, curve.is_closed(), precision),
     ];
     let sin_sw = precision.sin_switch();
     let mut guesses = Vec::new();
@@ -209,17 +209,6 @@ fn merge(
     let in_space =
         |(p, _): &(CurveSurfacePoint, f64)| vec![p.point[0], p.point[1], p.point[2], p.t];
     merge_duplicates(merged, &space, in_space, |(_, r)| *r)
-}
-
-fn coordinate(lo: f64, hi: f64, periodic: bool, precision: &Precision) -> Coordinate {
-    let range = hi - lo;
-    Coordinate {
-        lo,
-        hi,
-        periodic,
-        eps: precision.eps * range.max(1.0),
-        margin: range,
-    }
 }
 
 /// `|N̂·ĉ'| < sin θ_sw` at `x = (u, v, t)`: Newton on (5.2) is abandoned for (5.5).

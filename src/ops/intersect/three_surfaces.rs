@@ -254,13 +254,7 @@ fn coordinates(
     std::array::from_fn(|i| {
         let d = domains[i / 2];
         let [lo, hi] = if i % 2 == 0 { d.0 } else { d.1 };
-        Coordinate {
-            lo,
-            hi,
-            periodic: closed[i / 2][i % 2],
-            eps: precision.eps * (hi - lo).max(1.0),
-            margin: hi - lo,
-        }
+        Coordinate::new(lo, hi, closed[i / 2][i % 2], precision)
     })
 }
 

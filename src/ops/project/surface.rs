@@ -103,8 +103,8 @@ pub fn project_point_surface_f64<S: Surface>(
         return SurfaceFeet::Infinite;
     }
     let coords = [
-        coordinate(u0, u1, closed[0], precision),
-        coordinate(v0, v1, closed[1], precision),
+        Coordinate::new(u0, u1, closed[0], precision),
+        Coordinate::new(v0, v1, closed[1], precision),
     ];
     let scale = norm_f64(p)
         .max(norm_f64(&surface.jet(&u0, &v0, 0)[0]))
@@ -175,17 +175,6 @@ pub fn project_point_surface_f64<S: Surface>(
             .unwrap_or(std::cmp::Ordering::Equal)
     });
     SurfaceFeet::Finite(feet)
-}
-
-fn coordinate(lo: f64, hi: f64, periodic: bool, precision: &Precision) -> Coordinate {
-    let range = hi - lo;
-    Coordinate {
-        lo,
-        hi,
-        periodic,
-        eps: precision.eps * range.max(1.0),
-        margin: range,
-    }
 }
 
 fn surface_foot<S: Surface>(surface: &S, p: &[f64; 3], x: [f64; 2], singular: bool) -> SurfaceFoot {

@@ -1,0 +1,74 @@
+//! Answers of the front door → result records (CASES.md "Results"): a field-for-field
+//! translation; exact rationals are written as `"p/q"` strings.
+
+use rug::Rational;
+
+use super::result::{
+    CaseResult, ExactLineOut, ExactOut, LineOut, ParamLineOut, PointOut, SegmentOut,
+};
+use crate::certificate::Certified;
+use crate::ops::{Answer, LineAnswer, Point};
+
+fn texts(v: &[Rational]) -> Vec<String> {
+    v.iter().map(Rational::to_string).collect()
+}
+
+/// One point of an answer.
+pub(crate) fn point(p: &Point) -> PointOut {
+    PointOut {
+        xyz: p.xyz.clone(),
+        params: p.params.clone(),
+        bounds: p.xyz_box.clone(),
+        param_box: p.param_box.clone(),
+        multiplicity: p.multiplicity,
+        tangent: p.tangent,
+        distance: p.distance,
+        signed_distance: p.signed_distance,
+        nearest: p.nearest,
+        exact: p.exact.as_ref().map(|e| ExactOut {
+            xyz: texts(&e.xyz),
+            params: e.params.iter().map(|p| texts(p)).collect(),
+            distance_squared: e.distance_squared.as_ref().map(Rational::to_string),
+        }),
+    }
+}
+
+fn line(l: &LineAnswer) -> LineOut {
+    LineOut {
+        point: l.point.clone(),
+        dir: l.dir.clone(),
+        params: l
+            .params
+            .iter()
+            .map(|p| {
+                p.as_ref().map(|p| ParamLineOut {
+                    origin: p.origin.clone(),
+                    dir: p.dir.clone(),
+                })
+            })
+            .collect(),
+        exact: l.exact.as_ref().map(|(p, d)| ExactLineOut {
+            point: texts(p),
+            dir: texts(d),
+        }),
+    }
+}
+
+/// The result record of an answer.
+pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
+    let mut r = CaseResult::certified(id, c.value.kind(), c);
+    match &c.value {
+        Answer::Empty => r.points = Some(vec![]),
+        Answer::Points(p) => r.points = Some(p.iter().map(point).collect()),
+        Answer::Line(l) => r.line = Some(line(l)),
+        Answer::Segment(s) => {
+            r.segment = Some(SegmentOut {
+                a: point(&s.a),
+                b: point(&s.b),
+            })
+        }
+        Answer::Side(_, nearest) => r.points = nearest.as_ref().map(|p| vec![point(p)]),
+        Answer::Plane | Answer::Coincident | Answer::CommonComponent => {}
+    }
+    r
+}

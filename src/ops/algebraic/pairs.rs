@@ -1,0 +1,443 @@
+//! The algebraic pairs of the front door, decided exactly (CERTIFICATION.md `exact`):
+//! a line or segment against a whole sphere, ellipsoid (any frame) or ring torus
+//! (OPERATIONS.md §5.2 with §1.6), and in the plane a 2D line or segment or a conic
+//! against a whole `circle2`, `ellipse2` or a `conic2` (§6.3–§6.4). Shapes whose implicit
+//! form is not rational from the doubles given, that are trimmed to a sub-domain, or a
+//! spindle or horn torus (whose §1.6 domain cuts the implicit surface) are left to the
+//! numeric certifier (`None`).
+//!
+//! The exact solver works on the implicit equations and reports points; the parameters
+//! of the parametric curves and surfaces are enclosed by interval inverses of their
+//! parametrisations (`atan2` with a proven enclosure) over each point's enclosure, so
+//! every reported `param_box` contains the exact parameters.
+
+use rug::Rational;
+use std::cmp::Ordering;
+
+use super::{intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact};
+use super::{ConicCut, LineCut, LineHit, QuadricForm, TorusData};
+use crate::certificate::Certified;
+use crate::certify::univariate::RealRoot;
+use crate::curve::analytic::Shape as CurveShape;
+use crate::curve::{AnyCurve2, Curve};
+use crate::error::GeomError;
+use crate::num::round::round_rational;
+use crate::num::{Interval, Real};
+use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
+use crate::ops::closed_surface::is_closed_shell;
+use crate::ops::shape::{Linear, LinearObject, Shape};
+use crate::surface::frame::Frame;
+use crate::surface::AnySurface;
+
+/// An exact line `o + t·d` with the parameter range it is restricted to.
+struct ExactLine<const D: usize> {
+    o: [Rational; D],
+    d: [Rational; D],
+    range: Option<[Rational; 2]>,
+}
+
+fn unit() -> [Rational; 2] {
+    [Rational::new(), Rational::from(1)]
+}
+
+fn arr<const D: usize>(v: impl Iterator<Item = Rational>) -> [Rational; D] {
+    let v: Vec<Rational> = v.collect();
+    v.try_into().expect("dimension checked by the shape")
+}
+
+/// A 3D line or segment, exactly.
+fn line3(shape: &Linear) -> Option<ExactLine<3>> {
+    match shape.exact() {
+        LinearObject::Line(l) => Some(ExactLine {
+            o: arr(l.origin().iter().cloned()),
+            d: arr(l.dir().iter().cloned()),
+            range: l.range().cloned(),
+        }),
+        LinearObject::Segment(s) => Some(ExactLine {
+            o: arr(s.a().iter().cloned()),
+            d: arr((0..3).map(|i| Rational::from(&s.b()[i] - &s.a()[i]))),
+            range: Some(unit()),
+        }),
+        _ => None,
+    }
+}
+
+/// A 2D line or segment, exactly.
+fn line2(shape: &Shape) -> Option<ExactLine<2>> {
+    let Shape::Linear(linear) = shape else {
+        return None;
+    };
+    match linear.exact() {
+        LinearObject::Line2(l) => Some(ExactLine {
+            o: arr(l.origin().iter().cloned()),
+            d: arr(l.dir().iter().cloned()),
+            range: l.range().cloned(),
+        }),
+        LinearObject::Segment2(s) => Some(ExactLine {
+            o: arr(s.a().iter().cloned()),
+            d: arr((0..2).map(|i| Rational::from(&s.b()[i] - &s.a()[i]))),
+            range: Some(unit()),
+        }),
+        _ => None,
+    }
+}
+
+/// The exact implicit form of a closed surface, with what inverts its parametrisation.
+enum Closed {
+    /// Sphere or ellipsoid: local coordinates divided by the radii lie on the unit
+    /// sphere, `u = atan2(y, x)`, `v = atan2(z, ρ)`.
+    Quadric(QuadricForm<3>, Frame, [f64; 3]),
+    /// Ring torus `R > r`: `u = atan2(y, x)`, `v = atan2(z, ρ − R)`.
+    Torus(TorusData, Frame, f64),
+}
+
+fn closed(surface: &AnySurface) -> Option<Closed> {
+    if !is_closed_shell(surface) {
+        return None;
+    }
+    match surface {
+        AnySurface::Sphere(s) => Some(Closed::Quadric(
+            QuadricForm::of_surface(surface)?,
+            s.frame().clone(),
+            [s.radius(); 3],
+        )),
+        AnySurface::Ellipsoid(e) => Some(Closed::Quadric(
+            QuadricForm::of_surface(surface)?,
+            e.frame().clone(),
+            e.semi_axes(),
+        )),
+        AnySurface::Torus(t) if t.minor() < t.major() => Some(Closed::Torus(
+            TorusData::of_torus(t).ok()?,
+            t.frame().clone(),
+            t.major(),
+        )),
+        _ => None,
+    }
+}
+
+/// The angle of `(x, y)` in `[0, 2π)`, enclosed: `atan2` or, near its branch cut on the
+/// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0)` shifted by
+/// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure.
+fn angle(y: &Interval, x: &Interval) -> Interval {
+    let pi = x.pi_like();
+    let direct = y.atan2(x);
+    let across = y.neg().atan2(&x.neg()) + pi;
+    if across.width() < direct.width() {
+        across
+    } else if direct.hi() < 0.0 {
+        direct + pi + pi
+    } else {
+        direct
+    }
+}
+
+/// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`; an empty
+/// enclosure (the angle of the origin) stands for the whole circle.
+fn param(b: Interval) -> (f64, [f64; 2]) {
+    if b.is_empty() {
+        // A point on the axis (a pole): every angle is its parameter.
+        let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
+        return (0.0, [0.0, two_pi.hi()]);
+    }
+    let mut m = b.midpoint();
+    if m < 0.0 {
+        m += 2.0 * std::f64::consts::PI;
+    }
+    (m, [b.lo(), b.hi()])
+}
+
+fn point_box<const D: usize>(h: &LineHit<D>) -> [Interval; D] {
+    std::array::from_fn(|i| Interval::from_bounds(h.point[i].lo, h.point[i].hi))
+}
+
+/// `(u, v)` (estimate, enclosure) of the points of the box `b` on a whole sphere;
+/// `None` for other surfaces.
+pub(crate) fn sphere_params(
+    surface: &AnySurface,
+    b: &[Interval; 3],
+) -> Option<Vec<(f64, [f64; 2])>> {
+    match surface {
+        AnySurface::Sphere(_) => closed(surface).map(|shape| surface_params(&shape, b)),
+        _ => None,
+    }
+}
+
+/// `(u, v)` of a point of a closed surface (module doc).
+fn surface_params(shape: &Closed, p: &[Interval; 3]) -> Vec<(f64, [f64; 2])> {
+    let (frame, scale, major) = match shape {
+        Closed::Quadric(_, f, r) => (f, *r, 0.0),
+        Closed::Torus(_, f, major) => (f, [1.0; 3], *major),
+    };
+    let (q, _) = frame.to_local(p);
+    let q: [Interval; 3] = std::array::from_fn(|i| q[i] / Interval::point(scale[i]));
+    let rho = (q[0].sqr() + q[1].sqr()).sqrt();
+    let u = angle(&q[1], &q[0]);
+    let v = if major > 0.0 {
+        param(angle(&q[2], &(rho - Interval::point(major))))
+    } else {
+        // The latitude, in [−π/2, π/2]: no wrapping.
+        let v = q[2].atan2(&rho);
+        (v.midpoint(), [v.lo(), v.hi()])
+    };
+    vec![param(u), v]
+}
+
+/// Compare the root `t` with the rational `a`, exactly (refining an irrational root's
+/// isolating interval until `a` lies outside it).
+fn compare(t: &mut RealRoot, a: &Rational) -> Ordering {
+    loop {
+        let (lo, hi) = t.interval();
+        if lo == hi {
+            return lo.cmp(a);
+        }
+        if lo >= *a {
+            return Ordering::Greater;
+        }
+        if hi <= *a {
+            return Ordering::Less;
+        }
+        t.refine();
+    }
+}
+
+fn in_range(t: &RealRoot, range: &Option<[Rational; 2]>) -> bool {
+    let Some([a, b]) = range else {
+        return true;
+    };
+    let mut t = t.clone();
+    compare(&mut t, a) != Ordering::Less && compare(&mut t, b) != Ordering::Greater
+}
+
+/// The exact values of a hit at a rational parameter.
+fn exact_point<const D: usize>(
+    line: &ExactLine<D>,
+    t: &RealRoot,
+    line_first: bool,
+) -> Option<ExactPoint> {
+    let t = t.exact()?;
+    let xyz = (0..D)
+        .map(|i| &line.o[i] + Rational::from(&line.d[i] * t))
+        .map(Rational::from)
+        .collect();
+    let params = if line_first {
+        vec![vec![t.clone()], vec![]]
+    } else {
+        vec![vec![], vec![t.clone()]]
+    };
+    Some(ExactPoint {
+        xyz,
+        params,
+        distance_squared: None,
+    })
+}
+
+/// A line lying on the curve or surface: the line itself, or for a segment or a
+/// ranged line its end points (kind `segment`), with their parameters on the line.
+fn contained<const D: usize>(line: &ExactLine<D>, line_first: bool) -> Answer {
+    let nearest = |x: &Rational| round_rational(x).nearest;
+    let order = |mine: Vec<f64>| {
+        if line_first {
+            vec![mine, vec![]]
+        } else {
+            vec![vec![], mine]
+        }
+    };
+    let Some(range) = &line.range else {
+        let params = vec![Some(ParamLine {
+            origin: vec![0.0],
+            dir: vec![1.0],
+        })];
+        let mut params = params;
+        params.insert(usize::from(line_first), None);
+        return Answer::Line(LineAnswer {
+            point: line.o.iter().map(nearest).collect(),
+            dir: line.d.iter().map(nearest).collect(),
+            params,
+            exact: None,
+        });
+    };
+    let end = |t: &Rational| {
+        let xyz: Vec<Rational> = (0..D)
+            .map(|i| Rational::from(&line.d[i] * t) + &line.o[i])
+            .collect();
+        let r: Vec<_> = xyz.iter().map(round_rational).collect();
+        let tr = round_rational(t);
+        let bounds = |v: Vec<f64>, b: Vec<[f64; 2]>| (v, b);
+        let (params, param_box) = bounds(vec![tr.nearest], vec![[tr.lo, tr.hi]]);
+        Point {
+            xyz: r.iter().map(|x| x.nearest).collect(),
+            xyz_box: r.iter().map(|x| [x.lo, x.hi]).collect(),
+            params: order(params),
+            param_box: Some(if line_first {
+                vec![param_box, vec![]]
+            } else {
+                vec![vec![], param_box]
+            }),
+            multiplicity: 1,
+            ..Default::default()
+        }
+    };
+    Answer::Segment(SegmentAnswer {
+        a: end(&range[0]),
+        b: end(&range[1]),
+    })
+}
+
+/// The answer of a line cut, the line's parameter first or second as in the input.
+fn line_cut_answer<const D: usize>(
+    line: &ExactLine<D>,
+    mut cut: Certified<LineCut<D>>,
+    other_params: impl Fn(&[Interval; D]) -> Vec<(f64, [f64; 2])>,
+    line_first: bool,
+) -> Certified<Answer> {
+    if matches!(cut.value, LineCut::Contained) {
+        return cut.clone_with(contained(line, line_first));
+    }
+    if let LineCut::Points(hits) = &mut cut.value {
+        hits.retain(|h| in_range(&h.t, &line.range));
+    }
+    let points: Vec<Point> = cut
+        .value
+        .points()
+        .iter()
+        .map(|h| {
+            let b = point_box(h);
+            let t = h.t.rounded();
+            let line_params = (vec![t.nearest], vec![[t.lo, t.hi]]);
+            let other = other_params(&b);
+            let other_params = (
+                other.iter().map(|p| p.0).collect::<Vec<_>>(),
+                other.iter().map(|p| p.1).collect::<Vec<_>>(),
+            );
+            let (first, second) = if line_first {
+                (line_params, other_params)
+            } else {
+                (other_params, line_params)
+            };
+            Point {
+                xyz: h.nearest().to_vec(),
+                xyz_box: b.iter().map(|x| [x.lo(), x.hi()]).collect(),
+                params: vec![first.0, second.0],
+                param_box: Some(vec![first.1, second.1]),
+                multiplicity: h.multiplicity,
+                tangent: h.is_tangent(),
+                exact: exact_point(line, &h.t, line_first),
+                ..Default::default()
+            }
+        })
+        .collect();
+    cut.clone_with(Answer::from_points(points))
+}
+
+/// A line or segment against a whole sphere, ellipsoid or ring torus; `None` when the
+/// pair is not one of these.
+pub(crate) fn line_surface(
+    line: &Linear,
+    surface: &AnySurface,
+    line_first: bool,
+) -> Option<Certified<Answer>> {
+    let line = line3(line)?;
+    let shape = closed(surface)?;
+    let cut = match &shape {
+        Closed::Quadric(q, _, _) => intersect_line_quadric_exact(&line.o, &line.d, q),
+        Closed::Torus(t, _, _) => intersect_line_torus_exact(&line.o, &line.d, t),
+    };
+    Some(line_cut_answer(
+        &line,
+        cut,
+        |b| surface_params(&shape, b),
+        line_first,
+    ))
+}
+
+/// A plane conic with the inverse of its parametrisation (`None`: implicit).
+struct PlaneConic {
+    form: QuadricForm<2>,
+    /// Centre and semi-axes of `circle2` / `ellipse2`: `t = atan2((y−c_y)/b, (x−c_x)/a)`.
+    param: Option<([f64; 2], [f64; 2])>,
+}
+
+impl PlaneConic {
+    fn params(&self, p: &[Interval; 2]) -> Vec<(f64, [f64; 2])> {
+        let Some((c, r)) = self.param else {
+            return Vec::new();
+        };
+        let local: [Interval; 2] =
+            std::array::from_fn(|i| (p[i] - Interval::point(c[i])) / Interval::point(r[i]));
+        vec![param(angle(&local[1], &local[0]))]
+    }
+}
+
+fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
+    match shape {
+        Shape::Curve2(AnyCurve2::Analytic(c)) if c.is_closed() => {
+            let (form, axes) = match c.shape() {
+                CurveShape::Circle { radius } => {
+                    (QuadricForm::circle(c.center(), radius).ok()?, [radius; 2])
+                }
+                CurveShape::Ellipse { a, b } => {
+                    let axes = [[1.0, 0.0], [0.0, 1.0]];
+                    (QuadricForm::ellipse(c.center(), axes, a, b).ok()??, [a, b])
+                }
+                _ => return None,
+            };
+            Some(PlaneConic {
+                form,
+                param: Some((c.center(), axes)),
+            })
+        }
+        Shape::Conic2(c) => Some(PlaneConic {
+            form: QuadricForm::conic(c.coeffs()).ok()?,
+            param: None,
+        }),
+        _ => None,
+    }
+}
+
+/// Two plane shapes of which one is a conic and the other a 2D line, segment or
+/// conic; `None` for other pairs.
+pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
+    if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
+        let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
+        return Some(Ok(line_cut_answer(&line, cut, |p| conic.params(p), true)));
+    }
+    if let (Some(conic), Some(line)) = (plane_conic(a), line2(b)) {
+        let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
+        return Some(Ok(line_cut_answer(&line, cut, |p| conic.params(p), false)));
+    }
+    let (ca, cb) = (plane_conic(a)?, plane_conic(b)?);
+    Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_answer(&ca, &cb, cut)))
+}
+
+fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {
+    let value = match &cut.value {
+        ConicCut::Coincident => Answer::Coincident,
+        ConicCut::CommonComponent => Answer::CommonComponent,
+        ConicCut::Points(hits) => Answer::from_points(
+            hits.iter()
+                .map(|h| {
+                    let pt: [Interval; 2] = std::array::from_fn(|i| {
+                        Interval::from_bounds(h.point[i].lo, h.point[i].hi)
+                    });
+                    let (pa, pb) = (a.params(&pt), b.params(&pt));
+                    Point {
+                        xyz: h.nearest().to_vec(),
+                        xyz_box: pt.iter().map(|x| [x.lo(), x.hi()]).collect(),
+                        params: vec![
+                            pa.iter().map(|p| p.0).collect(),
+                            pb.iter().map(|p| p.0).collect(),
+                        ],
+                        param_box: Some(vec![
+                            pa.iter().map(|p| p.1).collect(),
+                            pb.iter().map(|p| p.1).collect(),
+                        ]),
+                        multiplicity: h.multiplicity,
+                        tangent: h.multiplicity >= 2,
+                        ..Default::default()
+                    }
+                })
+                .collect(),
+        ),
+    };
+    cut.clone_with(value)
+}

@@ -1,0 +1,58 @@
+//! `intersect`: the front door of every intersection (OPERATIONS.md §5–§8), one ladder
+//! for all shapes — the linear kernel when every shape is linear, the exact algebraic
+//! solver where the pair is algebraic, the numeric certifier otherwise.
+
+use super::intersect_curved;
+use crate::certificate::Certified;
+use crate::error::GeomError;
+use crate::ops::algebraic::pairs;
+use crate::ops::answer::Answer;
+use crate::ops::linear;
+use crate::ops::options::Options;
+use crate::ops::shape::{Linear, Shape};
+
+/// Every common point (or line, segment, coincidence) of two or three shapes,
+/// certified. Errors name the offending shape as `objects[i]`.
+pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, GeomError> {
+    if let Some(i) = shapes
+        .iter()
+        .position(|s| matches!(s, Shape::Polyhedron(_)))
+    {
+        return Err(GeomError::Unsupported {
+            field: format!("objects[{i}].type"),
+            reason: "a polyhedron is used as the `shell` of `classify` in this build".into(),
+        });
+    }
+    let linear: Option<Vec<&Linear>> = shapes
+        .iter()
+        .map(|s| match s {
+            Shape::Linear(l) => Some(l),
+            _ => None,
+        })
+        .collect();
+    if let Some(linear) = linear {
+        return linear::intersect(&linear, opts);
+    }
+    if let [a, b] = shapes {
+        if let Some(r) = algebraic(a, b) {
+            return r;
+        }
+    }
+    match shapes {
+        [a, b] => intersect_curved::pair(a, b, opts),
+        [a, b, c] => intersect_curved::three(a, b, c, opts),
+        other => Err(GeomError::InvalidValue {
+            field: "objects".into(),
+            reason: format!("intersect takes 2 or 3 objects, found {}", other.len()),
+        }),
+    }
+}
+
+/// The exact algebraic pairs ([`pairs`]), in either order.
+fn algebraic(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
+    match (a, b) {
+        (Shape::Linear(l), Shape::Surface(s)) => pairs::line_surface(l, s, true).map(Ok),
+        (Shape::Surface(s), Shape::Linear(l)) => pairs::line_surface(l, s, false).map(Ok),
+        _ => pairs::plane_pair(a, b),
+    }
+}

@@ -1,0 +1,293 @@
+//! Results of the linear kernels → [`Answer`]s: each kind of result is written once,
+//! for both kernels (their numbers are [`Q`]s).
+
+use nalgebra::Vector2;
+use rug::Rational;
+
+use super::kernel::{Len, Q};
+use crate::certificate::Certified;
+use crate::geom::line_plane::{LinePlane, LinePlanePoint};
+use crate::geom::lines2::{Empty2, Intersection2};
+use crate::geom::plane_plane::{ParamLine as KernelParamLine, PlaneLine, PlanePlane};
+use crate::geom::project::{LineFoot, LineProjection, PlaneProjection};
+use crate::geom::three_planes::ThreePlanes;
+use crate::geom::{Coord, Linear, Linear2};
+use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
+use crate::ops::classify::ShellPoint;
+
+/// The parameters of a point on each input shape (input order; `None`: the shape has
+/// no parameters, as an implicit plane).
+type Params<'a> = Vec<Option<&'a [Q]>>;
+
+/// A point of the linear kernels.
+pub(crate) fn point(xyz: &[Q], params: Params<'_>) -> Point {
+    let exact = |v: &[Q]| v.iter().filter_map(|q| q.exact.clone()).collect::<Vec<_>>();
+    let has_exact = xyz.iter().any(|q| q.exact.is_some());
+    Point {
+        xyz: xyz.iter().map(|q| q.r.nearest).collect(),
+        xyz_box: xyz.iter().map(Q::bounds).collect(),
+        params: params
+            .iter()
+            .map(|p| p.map_or(vec![], |p| p.iter().map(|q| q.r.nearest).collect()))
+            .collect(),
+        param_box: Some(
+            params
+                .iter()
+                .map(|p| p.map_or(vec![], |p| p.iter().map(Q::bounds).collect()))
+                .collect(),
+        ),
+        multiplicity: 1,
+        tangent: false,
+        exact: has_exact.then(|| ExactPoint {
+            xyz: exact(xyz),
+            params: params.iter().map(|p| p.map_or(vec![], exact)).collect(),
+            distance_squared: None,
+        }),
+        ..Point::default()
+    }
+}
+
+/// An empty answer with the reason the kernel found (`parallel`, ...).
+fn empty<T>(c: &Certified<T>, reason: &str) -> Certified<Answer> {
+    let mut out = c.clone_with(Answer::Empty);
+    out.reason = Some(reason.to_string());
+    out
+}
+
+/// Line ∩ plane; `line_first` says which of the two inputs is the line. A line lying
+/// in the plane is the line itself (kind `line`), or for a segment or a ranged line
+/// its end points (kind `segment`), with their parameters on the line.
+pub(crate) fn line_plane<T: Coord>(
+    c: Certified<LinePlane<Q>>,
+    l: Linear<'_, T>,
+    line_first: bool,
+    keep: bool,
+) -> Certified<Answer> {
+    match &c.value {
+        LinePlane::Point(LinePlanePoint { point: p, t, uv }) => {
+            let t = Some(std::slice::from_ref(t));
+            let uv = uv.as_ref().map(|v| v.as_slice());
+            let params = if line_first { vec![t, uv] } else { vec![uv, t] };
+            c.clone_with(Answer::Points(vec![point(p.as_slice(), params)]))
+        }
+        LinePlane::Parallel => empty(&c, "parallel"),
+        LinePlane::OutsideDomain(_) => empty(&c, "outside_domain"),
+        LinePlane::Contained => c.clone_with(contained(l, line_first, keep)),
+    }
+}
+
+/// A line or segment lying in the plane (see [`line_plane`]).
+fn contained<T: Coord>(l: Linear<'_, T>, line_first: bool, keep: bool) -> Answer {
+    let q = |x: &Rational| Q::rational(x, keep);
+    let (o, d, range) = match l {
+        Linear::Line(line) => (
+            line.origin().map(|x| x.to_rational()),
+            line.dir().map(|x| x.to_rational()),
+            line.range()
+                .map(|[a, b]| [a.to_rational(), b.to_rational()]),
+        ),
+        Linear::Segment(s) => {
+            let a = s.a().map(|x| x.to_rational());
+            let d = s.b().map(|x| x.to_rational()) - &a;
+            (a, d, Some([Rational::from(0), Rational::from(1)]))
+        }
+    };
+    let Some(range) = range else {
+        let param = ParamLine {
+            origin: vec![0.0],
+            dir: vec![1.0],
+        };
+        let mut params = vec![Some(param), None];
+        if !line_first {
+            params.reverse();
+        }
+        return Answer::Line(LineAnswer {
+            point: o.iter().map(|x| q(x).r.nearest).collect(),
+            dir: d.iter().map(|x| q(x).r.nearest).collect(),
+            params,
+            exact: None,
+        });
+    };
+    let end = |t: &Rational| {
+        let xyz: Vec<Q> = (0..3)
+            .map(|i| Q::rational(&(o[i].clone() + d[i].clone() * t), keep))
+            .collect();
+        let t = [Q::rational(t, keep)];
+        let params = if line_first {
+            vec![Some(&t[..]), None]
+        } else {
+            vec![None, Some(&t[..])]
+        };
+        point(&xyz, params)
+    };
+    Answer::Segment(SegmentAnswer {
+        a: end(&range[0]),
+        b: end(&range[1]),
+    })
+}
+
+fn param_line(p: &Option<KernelParamLine<Q>>) -> Option<ParamLine> {
+    p.as_ref().map(|p| ParamLine {
+        origin: p.origin.iter().map(|q| q.r.nearest).collect(),
+        dir: p.dir.iter().map(|q| q.r.nearest).collect(),
+    })
+}
+
+fn line(l: &PlaneLine<Q>, params: Vec<Option<ParamLine>>) -> LineAnswer {
+    let exact = |v: &[Q]| v.iter().filter_map(|q| q.exact.clone()).collect::<Vec<_>>();
+    LineAnswer {
+        point: l.point.iter().map(|q| q.r.nearest).collect(),
+        dir: l.dir.iter().map(|q| q.r.nearest).collect(),
+        params,
+        exact: l.point[0]
+            .exact
+            .is_some()
+            .then(|| (exact(l.point.as_slice()), exact(l.dir.as_slice()))),
+    }
+}
+
+/// Plane ∩ plane.
+pub(crate) fn plane_plane(c: Certified<PlanePlane<Q>>) -> Certified<Answer> {
+    match &c.value {
+        PlanePlane::Line(l) => c.clone_with(Answer::Line(line(
+            l,
+            vec![param_line(&l.on_a), param_line(&l.on_b)],
+        ))),
+        PlanePlane::Parallel => empty(&c, "parallel"),
+        PlanePlane::Coincident => c.clone_with(Answer::Coincident),
+    }
+}
+
+/// Three planes.
+pub(crate) fn three_planes(c: Certified<ThreePlanes<Q>>) -> Certified<Answer> {
+    match &c.value {
+        ThreePlanes::Point { point: p, params } => {
+            let ps = params
+                .iter()
+                .map(|p| p.as_ref().map(|v| v.as_slice()))
+                .collect();
+            c.clone_with(Answer::Points(vec![point(p.as_slice(), ps)]))
+        }
+        ThreePlanes::Line { line: l, pair } => {
+            let mut params = vec![None, None, None];
+            params[pair.0] = param_line(&l.on_a);
+            params[pair.1] = param_line(&l.on_b);
+            c.clone_with(Answer::Line(line(l, params)))
+        }
+        ThreePlanes::Plane => c.clone_with(Answer::Plane),
+        ThreePlanes::Empty => empty(&c, "no_common_point"),
+    }
+}
+
+fn point2(p: &Vector2<Q>, t1: &Q, t2: &Q) -> Point {
+    point(
+        p.as_slice(),
+        vec![
+            Some(std::slice::from_ref(t1)),
+            Some(std::slice::from_ref(t2)),
+        ],
+    )
+}
+
+/// Two 2D lines or segments; coincident lines are reported as the first one.
+pub(crate) fn lines2<T: Coord>(
+    c: Certified<Intersection2<Q>>,
+    first: Linear2<'_, T>,
+) -> Certified<Answer> {
+    match &c.value {
+        Intersection2::Point { point, t1, t2 } => {
+            c.clone_with(Answer::Points(vec![point2(point, t1, t2)]))
+        }
+        Intersection2::Segment {
+            a,
+            b,
+            a_params,
+            b_params,
+        } => c.clone_with(Answer::Segment(SegmentAnswer {
+            a: point2(a, &a_params[0], &a_params[1]),
+            b: point2(b, &b_params[0], &b_params[1]),
+        })),
+        Intersection2::Line => c.clone_with(Answer::Line(carrier2(first))),
+        Intersection2::Empty(Empty2::Parallel) => empty(&c, "parallel"),
+        Intersection2::Empty(Empty2::CollinearDisjoint) => empty(&c, "collinear_disjoint"),
+        Intersection2::Empty(Empty2::OutsideDomain { .. }) => empty(&c, "extensions_meet"),
+    }
+}
+
+/// The carrier of a 2D line or segment.
+fn carrier2<T: Coord>(l: Linear2<'_, T>) -> LineAnswer {
+    let n = |x: Rational| Q::rational(&x, false).r.nearest;
+    let (point, dir) = match l {
+        Linear2::Line(line) => (
+            line.origin().iter().map(|x| n(x.to_rational())).collect(),
+            line.dir().iter().map(|x| n(x.to_rational())).collect(),
+        ),
+        Linear2::Segment(s) => (
+            s.a().iter().map(|x| n(x.to_rational())).collect(),
+            (0..2)
+                .map(|i| n(s.b()[i].to_rational() - s.a()[i].to_rational()))
+                .collect(),
+        ),
+    };
+    LineAnswer {
+        point,
+        dir,
+        params: vec![],
+        exact: None,
+    }
+}
+
+fn foot(f: &LineFoot<Q, Len>, nearest: bool) -> Point {
+    let mut p = point(f.foot.as_slice(), vec![Some(std::slice::from_ref(&f.t))]);
+    p.distance = Some(f.distance.value.nearest);
+    p.nearest = Some(nearest);
+    if let (Some(exact), Some(sq)) = (p.exact.as_mut(), &f.distance.squared) {
+        exact.distance_squared = Some(sq.clone());
+    }
+    p
+}
+
+/// Point → line / segment: the stationary foot, or the nearest point.
+pub(crate) fn project_line(
+    c: Certified<LineProjection<Q, Len>>,
+    nearest_only: bool,
+) -> Certified<Answer> {
+    let v = &c.value;
+    if nearest_only {
+        return c.clone_with(Answer::Points(vec![foot(&v.nearest, true)]));
+    }
+    match &v.stationary {
+        Some(f) => c.clone_with(Answer::Points(vec![foot(f, f.t == v.nearest.t)])),
+        None => empty(&c, "foot_outside_domain"),
+    }
+}
+
+/// Point → plane.
+pub(crate) fn project_plane(c: Certified<PlaneProjection<Q, Len>>) -> Certified<Answer> {
+    let v = &c.value;
+    let mut p = point(
+        v.foot.as_slice(),
+        vec![v.uv.as_ref().map(|uv| uv.as_slice())],
+    );
+    p.signed_distance = Some(v.distance.value.nearest);
+    p.distance = Some(v.distance.value.nearest.abs());
+    p.nearest = Some(true);
+    if let (Some(exact), Some(sq)) = (p.exact.as_mut(), &v.distance.squared) {
+        exact.distance_squared = Some(sq.clone());
+    }
+    c.clone_with(Answer::Points(vec![p]))
+}
+
+/// Point against a polyhedral shell: the side, and the nearest shell point with its
+/// distance.
+pub(crate) fn shell_point(c: Certified<ShellPoint>, keep: bool) -> Certified<Answer> {
+    let v = &c.value;
+    let xyz: Vec<Q> = v.nearest.iter().map(|x| Q::rational(x, keep)).collect();
+    let mut p = point(&xyz, vec![]);
+    p.distance = Some(crate::num::round::sqrt_rational(&v.distance_squared).nearest);
+    p.nearest = Some(true);
+    if let Some(exact) = p.exact.as_mut() {
+        exact.distance_squared = Some(v.distance_squared.clone());
+    }
+    c.clone_with(Answer::Side(v.side, Some(p)))
+}

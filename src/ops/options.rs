@@ -1,0 +1,95 @@
+//! The options of the front door: the float path's tolerances (OPERATIONS.md §12), the
+//! certifier's budgets, and whether exact answers carry their rationals.
+
+use super::shape::Position;
+use crate::certify;
+use crate::error::GeomError;
+use crate::ops::float::Precision;
+
+/// Options shared by every operation.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Options {
+    /// ε and δ of the float path (§12); certificates never depend on them.
+    pub precision: Precision,
+    /// The box budget of subdivision.
+    pub max_boxes: usize,
+    /// The precision cap of MPFR escalation, in bits.
+    pub max_bits: u32,
+    /// Report the exact rationals of exact answers, and run linear shapes through the
+    /// exact rational kernel.
+    pub exact: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options {
+            precision: Precision::default(),
+            max_boxes: 20_000,
+            // 512, not CERTIFICATION.md's 4096: a tangency escalates to the cap before
+            // its singular certificate, and at 4096 bits that costs ~100× more
+            // (measured).
+            max_bits: 512,
+            exact: false,
+        }
+    }
+}
+
+impl Options {
+    /// Options with the given tolerances and budgets (`None`: the default); a
+    /// tolerance outside `(0, 1)` is an `invalid_value` error naming its field
+    /// (`options.tolerance`, `options.equal_tolerance`).
+    pub fn new(
+        tolerance: Option<f64>,
+        equal_tolerance: Option<f64>,
+        max_boxes: Option<u64>,
+        max_bits: Option<u32>,
+        exact: bool,
+    ) -> Result<Options, GeomError> {
+        let mut o = Options {
+            exact,
+            ..Options::default()
+        };
+        let check = |x: f64, field: &str, name: &str| {
+            if x > 0.0 && x < 1.0 {
+                Ok(x)
+            } else {
+                Err(GeomError::InvalidValue {
+                    field: field.into(),
+                    reason: format!("the tolerance {name} must lie in (0, 1), found {x}"),
+                })
+            }
+        };
+        if let Some(eps) = tolerance {
+            o.precision.eps = check(eps, "options.tolerance", "ε")?;
+        }
+        if let Some(delta) = equal_tolerance {
+            o.precision.delta = check(delta, "options.equal_tolerance", "δ")?;
+        }
+        if let Some(b) = max_boxes {
+            o.max_boxes = usize::try_from(b).unwrap_or(usize::MAX);
+        }
+        if let Some(b) = max_bits {
+            o.max_bits = b;
+        }
+        Ok(o)
+    }
+
+    /// The certifier's options.
+    pub fn certify(&self) -> certify::Options {
+        certify::Options {
+            max_boxes: self.max_boxes,
+            max_bits: self.max_bits,
+            min_width: 0.0,
+        }
+    }
+}
+
+/// How `project` projects (OPERATIONS.md §3).
+#[derive(Debug, Clone, PartialEq, Default)]
+pub struct ProjectOptions {
+    /// Only the nearest point of the whole (closed) domain.
+    pub nearest: bool,
+    /// Projection along this direction (§3.5) instead of the perpendicular feet.
+    pub direction: Option<Position>,
+    pub options: Options,
+}

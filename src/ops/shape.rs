@@ -1,0 +1,340 @@
+//! The shapes every operation of the front door takes ([`Shape`]), and the query
+//! points of projections and classification ([`Position`]).
+//!
+//! One type per concept: a sphere is a [`crate::surface::Sphere`] inside
+//! [`Shape::Surface`]; its implicit form, exact quadric form and closed-shell view are
+//! conversions of it ([`crate::surface::AnySurface::implicit`],
+//! [`crate::ops::algebraic::QuadricForm::of_surface`], [`crate::ops::closed_surface`]).
+//! Linear objects keep their numbers exactly as given: doubles (the certified filtered
+//! kernel), or rationals when some number is not a double (a `"1/3"` string of the
+//! case format).
+
+use nalgebra::{Vector2, Vector3};
+use rug::Rational;
+
+use super::polyhedron::Polyhedron;
+use crate::curve::lines::{Line as CurveLine, Segment as CurveSegment};
+use crate::curve::{AnyCurve2, AnyCurve3, Conic2};
+use crate::error::GeomError;
+use crate::geom::{Coord, Line, Line2, Linear as LinearRef, Linear2, Plane, Segment, Segment2};
+use crate::surface::AnySurface;
+
+/// A linear object over one coordinate type (`f64` or `rug::Rational`).
+#[derive(Debug, Clone, PartialEq)]
+pub enum LinearObject<T: Coord> {
+    Line(Line<T>),
+    Segment(Segment<T>),
+    Plane(Plane<T>),
+    Line2(Line2<T>),
+    Segment2(Segment2<T>),
+}
+
+/// A linear object with its numbers as given: all doubles, or exact rationals.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Linear {
+    Double(LinearObject<f64>),
+    Exact(LinearObject<Rational>),
+}
+
+/// Every shape an operation takes (OPERATIONS.md §1; the objects of the case format).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Shape {
+    /// Lines (with an optional range), segments and planes, in 3D and 2D.
+    Linear(Linear),
+    /// A space curve other than a plain line or segment.
+    Curve(AnyCurve3),
+    /// A parametric plane curve other than a plain 2D line or segment.
+    Curve2(AnyCurve2),
+    /// The implicit plane conic `conic2`.
+    Conic2(Conic2),
+    /// A parametric surface (a plane with a parametrisation and domain included).
+    Surface(AnySurface),
+    /// A closed polyhedral shell.
+    Polyhedron(Polyhedron),
+}
+
+/// A query point of `project` and `classify`: doubles, or exact rationals.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Position {
+    Double(Vec<f64>),
+    Exact(Vec<Rational>),
+}
+
+impl<T: Coord> LinearObject<T> {
+    /// The name of the shape's kind in the case format (`line`, `segment`, ...).
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            LinearObject::Line(_) => "line",
+            LinearObject::Segment(_) => "segment",
+            LinearObject::Plane(_) => "plane",
+            LinearObject::Line2(_) => "line2",
+            LinearObject::Segment2(_) => "segment2",
+        }
+    }
+    /// The object as a 3D line or segment.
+    pub fn linear(&self) -> Option<LinearRef<'_, T>> {
+        match self {
+            LinearObject::Line(l) => Some(LinearRef::Line(l)),
+            LinearObject::Segment(s) => Some(LinearRef::Segment(s)),
+            _ => None,
+        }
+    }
+    /// The object as a 2D line or segment.
+    pub fn linear2(&self) -> Option<Linear2<'_, T>> {
+        match self {
+            LinearObject::Line2(l) => Some(Linear2::Line(l)),
+            LinearObject::Segment2(s) => Some(Linear2::Segment(s)),
+            _ => None,
+        }
+    }
+    /// The object as a plane.
+    pub fn plane(&self) -> Option<&Plane<T>> {
+        match self {
+            LinearObject::Plane(p) => Some(p),
+            _ => None,
+        }
+    }
+}
+
+/// The same object with every number mapped by `f` (an exact conversion: the object
+/// stays valid, since the numbers are equal).
+fn convert<T: Coord, U: Coord>(o: &LinearObject<T>, f: impl Fn(&T) -> U) -> LinearObject<U> {
+    let v3 = |v: &Vector3<T>| Vector3::new(f(&v[0]), f(&v[1]), f(&v[2]));
+    let v2 = |v: &Vector2<T>| Vector2::new(f(&v[0]), f(&v[1]));
+    let range = |r: Option<&[T; 2]>| r.map(|[a, b]| [f(a), f(b)]);
+    let built = match o {
+        LinearObject::Line(l) => {
+            Line::with_range(v3(l.origin()), v3(l.dir()), range(l.range())).map(LinearObject::Line)
+        }
+        LinearObject::Segment(s) => Segment::new(v3(s.a()), v3(s.b())).map(LinearObject::Segment),
+        LinearObject::Plane(Plane::Parametric { origin, u, v }) => {
+            Plane::parametric(v3(origin), v3(u), v3(v)).map(LinearObject::Plane)
+        }
+        LinearObject::Plane(Plane::Implicit { normal, d }) => {
+            Plane::implicit(v3(normal), f(d)).map(LinearObject::Plane)
+        }
+        LinearObject::Line2(l) => Line2::with_range(v2(l.origin()), v2(l.dir()), range(l.range()))
+            .map(LinearObject::Line2),
+        LinearObject::Segment2(s) => {
+            Segment2::new(v2(s.a()), v2(s.b())).map(LinearObject::Segment2)
+        }
+    };
+    built.expect("an exact conversion keeps a valid object valid")
+}
+
+impl LinearObject<f64> {
+    /// The same object with its doubles as exact rationals.
+    pub fn to_rational(&self) -> LinearObject<Rational> {
+        convert(self, Coord::to_rational)
+    }
+}
+
+impl Linear {
+    /// The name of the shape's kind in the case format.
+    pub fn type_name(&self) -> &'static str {
+        match self {
+            Linear::Double(o) => o.type_name(),
+            Linear::Exact(o) => o.type_name(),
+        }
+    }
+
+    /// The object in exact rationals.
+    pub fn exact(&self) -> LinearObject<Rational> {
+        match self {
+            Linear::Double(o) => o.to_rational(),
+            Linear::Exact(o) => o.clone(),
+        }
+    }
+
+    /// A 3D line or segment as a curve of the curved operations (doubles only); `None`
+    /// for planes and 2D objects. An unbounded line gets the range `reach` computes
+    /// for it (`None`: the line needs a range, an `unsupported` error naming `range`).
+    pub fn to_curve3(
+        &self,
+        reach: impl FnOnce(&[f64; 3], &[f64; 3]) -> Option<(f64, f64)>,
+    ) -> Result<Option<AnyCurve3>, GeomError> {
+        if !matches!(self.type_name(), "line" | "segment") {
+            return Ok(None);
+        }
+        Ok(Some(match self.doubles()? {
+            LinearObject::Line(l) => {
+                let (o, d) = (arr3(l.origin()), arr3(l.dir()));
+                let range = match l.range() {
+                    Some(&[a, b]) => (a, b),
+                    None => reach(&o, &d).ok_or_else(needs_range)?,
+                };
+                AnyCurve3::Line(CurveLine::new(o, d, Some(range))?)
+            }
+            LinearObject::Segment(s) => {
+                AnyCurve3::Segment(CurveSegment::new(arr3(s.a()), arr3(s.b()), None)?)
+            }
+            _ => return Ok(None),
+        }))
+    }
+
+    /// A 2D line or segment as a plane curve (doubles only); `None` for other objects.
+    /// An unbounded line gets the range `reach` computes for it, as in
+    /// [`Linear::to_curve3`].
+    pub fn to_curve2(
+        &self,
+        reach: impl FnOnce(&[f64; 2], &[f64; 2]) -> Option<(f64, f64)>,
+    ) -> Result<Option<AnyCurve2>, GeomError> {
+        if !matches!(self.type_name(), "line2" | "segment2") {
+            return Ok(None);
+        }
+        Ok(match self.doubles()? {
+            LinearObject::Line2(l) => {
+                let (o, d) = ([l.origin()[0], l.origin()[1]], [l.dir()[0], l.dir()[1]]);
+                let range = match l.range() {
+                    Some(&[a, b]) => (a, b),
+                    None => reach(&o, &d).ok_or_else(needs_range)?,
+                };
+                Some(AnyCurve2::Line(CurveLine::new(o, d, Some(range))?))
+            }
+            LinearObject::Segment2(s) => Some(AnyCurve2::Segment(CurveSegment::new(
+                [s.a()[0], s.a()[1]],
+                [s.b()[0], s.b()[1]],
+                None,
+            )?)),
+            _ => None,
+        })
+    }
+
+    /// The object on doubles; an exact object is refused (`unsupported`, naming the
+    /// object: curved operations take doubles).
+    pub fn doubles(&self) -> Result<LinearObject<f64>, GeomError> {
+        match self {
+            Linear::Double(o) => Ok(o.clone()),
+            Linear::Exact(o) => match o.first_inexact() {
+                None => Ok(convert(o, Rational::to_f64)),
+                Some(field) => Err(not_doubles(&field)),
+            },
+        }
+    }
+}
+
+impl LinearObject<Rational> {
+    /// The field path of the first number that is not a double (`origin[1]`).
+    fn first_inexact(&self) -> Option<String> {
+        let fields: Vec<(&str, Vec<&Rational>)> = match self {
+            LinearObject::Line(l) => vec![
+                ("origin", l.origin().iter().collect()),
+                ("dir", l.dir().iter().collect()),
+                ("range", l.range().map_or(vec![], |r| r.iter().collect())),
+            ],
+            LinearObject::Segment(s) => {
+                vec![("a", s.a().iter().collect()), ("b", s.b().iter().collect())]
+            }
+            LinearObject::Plane(Plane::Parametric { origin, u, v }) => vec![
+                ("origin", origin.iter().collect()),
+                ("u", u.iter().collect()),
+                ("v", v.iter().collect()),
+            ],
+            LinearObject::Plane(Plane::Implicit { normal, d }) => {
+                vec![("normal", normal.iter().collect()), ("d", vec![d])]
+            }
+            LinearObject::Line2(l) => vec![
+                ("origin", l.origin().iter().collect()),
+                ("dir", l.dir().iter().collect()),
+                ("range", l.range().map_or(vec![], |r| r.iter().collect())),
+            ],
+            LinearObject::Segment2(s) => {
+                vec![("a", s.a().iter().collect()), ("b", s.b().iter().collect())]
+            }
+        };
+        for (name, values) in fields {
+            if let Some(i) = values.iter().position(|q| !is_double(q)) {
+                return Some(if name == "d" {
+                    name.into()
+                } else {
+                    format!("{name}[{i}]")
+                });
+            }
+        }
+        None
+    }
+}
+
+/// The rational is exactly a finite double.
+fn is_double(q: &Rational) -> bool {
+    let r = crate::num::round::round_rational(q);
+    r.is_exact() && !r.overflowed()
+}
+
+fn not_doubles(field: &str) -> GeomError {
+    GeomError::Unsupported {
+        field: field.into(),
+        reason: "curved operations take doubles, not exact strings".into(),
+    }
+}
+
+fn needs_range() -> GeomError {
+    GeomError::Unsupported {
+        field: "range".into(),
+        reason: "the line needs a `range` here: the other object is unbounded".into(),
+    }
+}
+
+fn arr3(v: &Vector3<f64>) -> [f64; 3] {
+    [v[0], v[1], v[2]]
+}
+
+impl Shape {
+    /// The name of the shape's kind, as the case format writes it (`line`, `sphere`,
+    /// `nurbs_surface`, ...), for messages.
+    pub fn kind_name(&self) -> &'static str {
+        match self {
+            Shape::Linear(l) => l.type_name(),
+            Shape::Curve(_) => "curve",
+            Shape::Curve2(_) => "plane curve",
+            Shape::Conic2(_) => "conic2",
+            Shape::Surface(_) => "surface",
+            Shape::Polyhedron(_) => "polyhedron",
+        }
+    }
+
+    /// Whether the shape is curved (a curve, a conic or a surface).
+    pub fn is_curved(&self) -> bool {
+        matches!(
+            self,
+            Shape::Curve(_) | Shape::Curve2(_) | Shape::Conic2(_) | Shape::Surface(_)
+        )
+    }
+}
+
+impl Position {
+    /// The number of coordinates.
+    pub fn dim(&self) -> usize {
+        match self {
+            Position::Double(v) => v.len(),
+            Position::Exact(v) => v.len(),
+        }
+    }
+
+    /// The coordinates as doubles (curved operations); an exact coordinate is refused
+    /// naming `field[i]`.
+    pub fn doubles<const D: usize>(&self, field: &str) -> Result<[f64; D], GeomError> {
+        if self.dim() != D {
+            return Err(GeomError::CountMismatch {
+                field: field.into(),
+                expected: format!("{D} coordinates"),
+                found: self.dim().to_string(),
+            });
+        }
+        match self {
+            Position::Double(v) => Ok(std::array::from_fn(|i| v[i])),
+            Position::Exact(v) => match v.iter().position(|q| !is_double(q)) {
+                None => Ok(std::array::from_fn(|i| v[i].to_f64())),
+                Some(i) => Err(not_doubles(&format!("{field}[{i}]"))),
+            },
+        }
+    }
+
+    /// The exact coordinates.
+    pub fn exact(&self) -> Vec<Rational> {
+        match self {
+            Position::Double(v) => v.iter().map(|x| x.to_rational()).collect(),
+            Position::Exact(v) => v.clone(),
+        }
+    }
+}
