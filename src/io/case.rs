@@ -50,6 +50,8 @@ pub struct Options {
     pub max_bits: Option<u32>,
     /// The box budget of subdivision.
     pub max_boxes: Option<u64>,
+    /// Surface ∩ surface: the largest chord-to-curve distance of the polylines.
+    pub chord_tolerance: Option<Double>,
     /// Also report the exact rationals of exact results (`"p/q"` strings).
     #[serde(default)]
     pub exact: bool,

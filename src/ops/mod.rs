@@ -35,7 +35,10 @@ pub mod shape;
 pub mod space_curves;
 pub mod surface_surface;
 
-pub use answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
+pub use answer::{
+    Answer, CurveAnswer, CurveEnd, CurveVertex, CurvesAnswer, ExactPoint, LineAnswer, ParamLine,
+    Point, SegmentAnswer, SingularPointAnswer,
+};
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use front::{classify, intersect, project};
 pub use options::{Options, ProjectOptions};

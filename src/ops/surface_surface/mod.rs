@@ -54,7 +54,7 @@ use operand::Pair;
 /// Every intersection curve and singular point of `a` and `b` (§9), float only: no proof,
 /// and closed loops smaller than the iso-line spacing may be missed (§9.2 "Limitation").
 ///
-/// Errors: a surface with an unbounded parameter domain (`a.domain`, `b.domain`), invalid
+/// Errors: a surface with an unbounded parameter domain (`objects[0].domain`, `objects[1].domain`), invalid
 /// options (`options.*`).
 pub fn intersect_surface_surface_f64<A: SurfaceOperand, B: SurfaceOperand>(
     a: &A,

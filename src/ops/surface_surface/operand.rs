@@ -73,13 +73,13 @@ pub struct Pair<'a, R, S> {
 }
 
 impl<'a, R: SurfaceOperand, S: SurfaceOperand> Pair<'a, R, S> {
-    /// Errors: an unbounded parameter domain (field `a.domain` / `b.domain`), invalid
+    /// Errors: an unbounded parameter domain (field `objects[0].domain` / `objects[1].domain`), invalid
     /// options.
     pub fn new(r: &'a R, s: &'a S, options: &'a Options) -> Result<Self, GeomError> {
         options.check()?;
         let walk = SurfaceWalkOptions::new(options.delta_alpha);
-        let sr = SurfaceStepper::new(r, walk).map_err(|e| e.at("a"))?;
-        let ss = SurfaceStepper::new(s, walk).map_err(|e| e.at("b"))?;
+        let sr = SurfaceStepper::new(r, walk).map_err(|e| e.at("objects[0]"))?;
+        let ss = SurfaceStepper::new(s, walk).map_err(|e| e.at("objects[1]"))?;
         let (ru, rv) = r.domain();
         let (sa, sb) = s.domain();
         let domains = [ru, rv, sa, sb];
