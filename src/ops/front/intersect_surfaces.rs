@@ -19,7 +19,7 @@ use crate::ops::answer::{
 use crate::ops::options::Options;
 use crate::ops::shape::{Linear, LinearObject, Shape};
 use crate::ops::surface_surface::{
-    self as ss, CertifiedCurve, CertifiedSingularPoint, SingularKind, SurfaceIntersection,
+    self as ss, CertifiedCurve, CertifiedSingularPoint, SurfaceIntersection,
 };
 use crate::surface::plane::Plane;
 use crate::surface::AnySurface;
@@ -176,14 +176,14 @@ fn cover(
     Some((widen(s), widen(t)))
 }
 
-/// The certified intersection as an answer: isolated contacts (no branch meets them)
-/// become points; nothing at all becomes `Empty`.
+/// The certified intersection as an answer: singular points that no branch meets become
+/// isolated points; nothing at all becomes `Empty`.
 fn answer(c: Certified<SurfaceIntersection>, params: [bool; 2]) -> Certified<Answer> {
     let mut out = CurvesAnswer::default();
     let mut index = vec![None; c.value.singular_points.len()];
     for (i, p) in c.value.singular_points.iter().enumerate() {
-        let isolated = p.point.kind == SingularKind::Contact && p.branch_ends == 0;
-        let isolated = isolated && !c.value.curves.iter().any(|k| meets(k, i));
+        // no branch meets it (a contact of two spheres, a plane touching a cone's apex)
+        let isolated = p.branch_ends == 0 && !c.value.curves.iter().any(|k| meets(k, i));
         if isolated {
             out.points.push(singular(p, params).point);
         } else {

@@ -213,6 +213,9 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
     /// Split a float curve at its singular points and certify each arc.
     fn add_curve(&mut self, curve: IntersectionCurve) {
         self.certify_new_singular();
+        if super::float::collapsed(self.ctx.pair, &curve) {
+            return;
+        }
         for (points, start, end) in split(&curve) {
             self.add_arc(points, start, end);
         }

@@ -73,6 +73,8 @@ pub struct ChainContext<'p, 'a, R, S> {
 const OVERLAP: f64 = 1.0 / 32.0;
 /// The deepest splitting of one segment.
 const MAX_DEPTH: usize = 14;
+/// At most this many times an arc's points are doubled when boxes do not join.
+const MAX_DENSIFY: usize = 2;
 /// At most this many pieces approach a singular box.
 const MAX_APPROACH: usize = 80;
 
@@ -261,7 +263,9 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
             .filter(|&k| k != j)
             .map(|k| {
                 let (p, q) = (a[k].min(b[k]), a[k].max(b[k]));
-                let m = 0.25 * (q - p) + 1e-13 * scale;
+                // a floor against rounding where the chord does not move in x_k (a
+                // straight line): relative to the slab, so long slabs get room too
+                let m = 0.25 * (q - p) + 1e-9 * (t1 - t0).abs() + 1e-13 * scale;
                 Interval::from_bounds(p - m, q + m)
             })
             .collect();
@@ -321,8 +325,56 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
 
     /// The chain of an arc through the curve points `xs` (unwrapped, consecutive), with
     /// its ends anchored (`None` at both ends: a closed curve, `xs` ending where it
-    /// started). `Err` says why it could not be proven.
+    /// started). `Err` says why it could not be proven. When two consecutive boxes are
+    /// not proven to join (their slabs, over different fixed parameters, are too long
+    /// for the exit face of one to fit in the next), the proof is repeated through
+    /// curve points halfway between the given ones, up to [`MAX_DENSIFY`] times.
     pub fn arc(
+        &self,
+        xs: &[[f64; 4]],
+        start: Option<Anchor>,
+        end: Option<Anchor>,
+    ) -> Result<Vec<Piece>, String> {
+        let mut points = xs.to_vec();
+        let mut result = self.arc_once(&points, start, end);
+        for _ in 0..MAX_DENSIFY {
+            match &result {
+                Err(e) if e.contains("not proven to join") => {}
+                _ => break,
+            }
+            points = self.densified(&points, start, end);
+            result = self.arc_once(&points, start, end);
+        }
+        result
+    }
+
+    /// `xs` with the curve point halfway inserted in every segment (not next to a
+    /// singular anchor, where Newton may not converge).
+    fn densified(
+        &self,
+        xs: &[[f64; 4]],
+        start: Option<Anchor>,
+        end: Option<Anchor>,
+    ) -> Vec<[f64; 4]> {
+        let n = xs.len();
+        let mut out = Vec::with_capacity(2 * n);
+        for (w, pair) in xs.windows(2).enumerate() {
+            out.push(pair[0]);
+            let near_singular = (w == 0 && matches!(start, Some(Anchor::Singular(_))))
+                || (w + 2 == n && matches!(end, Some(Anchor::Singular(_))));
+            if near_singular {
+                continue;
+            }
+            let j = self.choose_fixed(&pair[0], &pair[1]);
+            if let Some(m) = self.curve_point_between(&pair[0], &pair[1], j) {
+                out.push(m);
+            }
+        }
+        out.extend(xs.last());
+        out
+    }
+
+    fn arc_once(
         &self,
         xs: &[[f64; 4]],
         start: Option<Anchor>,

@@ -25,7 +25,10 @@ pub fn trace_all<R: Surface, S: Surface>(pair: &Pair<'_, R, S>) -> SurfaceInters
         if curves.iter().any(|c| on_curve(pair, c, &s)) {
             continue;
         }
-        curves.push(trace_branch(&mut tracer, s.x, &mut starts));
+        let c = trace_branch(&mut tracer, s.x, &mut starts);
+        if !collapsed(pair, &c) {
+            curves.push(c);
+        }
     }
     let reach = 0.5;
     for x in contacts.into_iter().take(MAX_CONTACT_SEEDS) {
@@ -37,6 +40,14 @@ pub fn trace_all<R: Surface, S: Surface>(pair: &Pair<'_, R, S>) -> SurfaceInters
         curves,
         singular_points: tracer.singular,
     }
+}
+
+/// A "curve" that is one singular point: both ends at the same singular point and no
+/// longer than `δ_len` (a start point on an iso-line that passes through a cone's apex
+/// marches into the apex at once).
+pub fn collapsed<R, S>(pair: &Pair<'_, R, S>, c: &IntersectionCurve) -> bool {
+    matches!(c.ends, [CurveEnd::Singular(i), CurveEnd::Singular(k)] if i == k)
+        && c.polyline_length() <= pair.delta_len()
 }
 
 /// The branch through `x`: a march with `σ = +1`, and unless it closes, one with `σ = −1`;
