@@ -32,6 +32,11 @@ ExactOut epeck_lines_2d(const Two2 &a, const Two2 &b) {
 ExactOut epeck_segments_2d(const Two2 &a, const Two2 &b) {
   return ops::exact(ops::segments_2d<K>(a, b));
 }
+ExactOut epeck_line_line(const Linear3 &a, const Linear3 &b) {
+  ops::ExactSink s;
+  ops::line_line<K>(s, a, b);
+  return std::move(s.out);
+}
 
 FloatOut epeck_line_plane_f64(bool force_exact, const Two3 &line, const PlaneIn &plane) {
   return ops::to_f64(force_exact, ops::line_plane<K>(line, plane));
@@ -58,6 +63,11 @@ FloatOut epeck_lines_2d_f64(bool force_exact, const Two2 &a, const Two2 &b) {
 }
 FloatOut epeck_segments_2d_f64(bool force_exact, const Two2 &a, const Two2 &b) {
   return ops::to_f64(force_exact, ops::segments_2d<K>(a, b));
+}
+FloatOut epeck_line_line_f64(bool force_exact, const Linear3 &a, const Linear3 &b) {
+  ops::FloatSink s{force_exact};
+  ops::line_line<K>(s, a, b);
+  return s.out;
 }
 
 } // namespace geocert_oracle

@@ -34,5 +34,10 @@ FloatOut epick_lines_2d(const Two2 &a, const Two2 &b) {
 FloatOut epick_segments_2d(const Two2 &a, const Two2 &b) {
   return ops::to_f64(false, ops::segments_2d<K>(a, b));
 }
+FloatOut epick_line_line(const Linear3 &a, const Linear3 &b) {
+  ops::FloatSink s{false};
+  ops::line_line<K>(s, a, b);
+  return s.out;
+}
 
 } // namespace geocert_oracle

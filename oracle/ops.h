@@ -6,15 +6,22 @@
 
 #include <CGAL/Intersections_2/Line_2_Line_2.h>
 #include <CGAL/Intersections_2/Segment_2_Segment_2.h>
+#include <CGAL/Intersections_3/Line_3_Line_3.h>
 #include <CGAL/Intersections_3/Line_3_Plane_3.h>
+#include <CGAL/Intersections_3/Line_3_Ray_3.h>
+#include <CGAL/Intersections_3/Line_3_Segment_3.h>
 #include <CGAL/Intersections_3/Plane_3_Plane_3.h>
 #include <CGAL/Intersections_3/Plane_3_Plane_3_Plane_3.h>
 #include <CGAL/Intersections_3/Plane_3_Segment_3.h>
+#include <CGAL/Intersections_3/Ray_3_Ray_3.h>
+#include <CGAL/Intersections_3/Ray_3_Segment_3.h>
+#include <CGAL/Intersections_3/Segment_3_Segment_3.h>
 #include <boost/multiprecision/gmp.hpp>
 #include <boost/optional.hpp>
 #include <boost/variant.hpp>
 #include <gmp.h>
 
+#include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <string>
@@ -84,6 +91,34 @@ template <class K> typename K::Segment_2 segment2(const Two2 &in, const char *fi
   typename K::Segment_2 s(point2<K>(in.a.data()), point2<K>(in.b.data()));
   if (s.is_degenerate()) reject("degenerate_segment", field);
   return s;
+}
+
+/// Calls `f` with the CGAL object of a line ∩ line argument: Segment_3(a, b) for a
+/// segment; for the line through `a` with direction `b` restricted to [lo, hi]:
+/// Line_3 when both ends are open (infinite), Ray_3 from a + lo·b along b or from
+/// a + hi·b along −b when one is, Segment_3(a + lo·b, a + hi·b) when neither. The end
+/// points are constructed in the kernel's arithmetic: exactly in Epeck, rounded in
+/// Epick (exact there for an end at 0, the only one the benchmarks use).
+template <class K, class F> void with_linear3(const Linear3 &in, const char *field, F &&f) {
+  if (in.segment) {
+    f(segment3<K>(Two3{in.a, in.b}, field));
+    return;
+  }
+  typename K::Point_3 p = point3<K>(in.a.data());
+  typename K::Vector_3 d = vector3<K>(in.b.data());
+  if (d == CGAL::NULL_VECTOR) reject("zero_direction", field);
+  const bool has_lo = std::isfinite(in.lo), has_hi = std::isfinite(in.hi);
+  auto at = [&](double t) { return t == 0.0 ? p : p + d * typename K::FT(t); };
+  if (!has_lo && !has_hi) {
+    f(typename K::Line_3(p, d));
+  } else if (has_lo && !has_hi) {
+    f(typename K::Ray_3(at(in.lo), d));
+  } else if (!has_lo) {
+    f(typename K::Ray_3(at(in.hi), -d));
+  } else {
+    if (!(in.lo < in.hi)) reject("degenerate_segment", field);
+    f(typename K::Segment_3(at(in.lo), at(in.hi)));
+  }
 }
 
 // ---- the operations -------------------------------------------------------
@@ -196,6 +231,12 @@ template <class S, class K> void emit(S &s, const CGAL::Segment_3<K> &seg) {
   emit(s, seg.target());
   s.kind(Kind::Segment);
 }
+/// A ray as its source() and to_vector().
+template <class S, class K> void emit(S &s, const CGAL::Ray_3<K> &r) {
+  emit(s, r.source());
+  emit_vector(s, r.to_vector());
+  s.kind(Kind::Ray);
+}
 /// A plane as its coefficients a, b, c, d of a x + b y + c z + d = 0.
 template <class S, class K> void emit(S &s, const CGAL::Plane_3<K> &p) {
   s.kind(Kind::Plane);
@@ -226,6 +267,15 @@ void emit(S &s, const boost::optional<boost::variant<T...>> &r) {
     return;
   }
   boost::apply_visitor([&s](const auto &object) { emit(s, object); }, *r);
+}
+
+/// Line ∩ line for lines, rays, ranged lines and segments (every pair CGAL 5.5
+/// intersects), written to `sink` (after the emit overloads, which it finds by
+/// ordinary lookup).
+template <class K, class S> void line_line(S &sink, const Linear3 &a, const Linear3 &b) {
+  with_linear3<K>(a, "a", [&](const auto &x) {
+    with_linear3<K>(b, "b", [&](const auto &y) { emit(sink, CGAL::intersection(x, y)); });
+  });
 }
 
 template <class R> ExactOut exact(const R &result) {

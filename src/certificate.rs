@@ -1,6 +1,6 @@
-//! The certificate every operation returns (spec/CERTIFICATION.md, ARCHITECTURE.md "Results").
+//! The certificate every operation returns (docs/CERTIFICATES.md, ARCHITECTURE.md "Results").
 
-/// Verdict levels of CERTIFICATION.md, ordered from strongest to weakest, so that
+/// Verdict levels of docs/CERTIFICATES.md, ordered from strongest to weakest, so that
 /// the status of a composite result is the maximum of its parts.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum Status {
@@ -35,7 +35,7 @@ impl Status {
 }
 
 /// The arithmetic that decided a result, weakest-cost first
-/// (CERTIFICATION.md "Escalation").
+/// (docs/CERTIFICATES.md "Escalation").
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
 pub enum Arithmetic {
     /// Plain f64, no proof (the `*_f64` variants).
@@ -56,6 +56,16 @@ pub enum Arithmetic {
 }
 
 impl Arithmetic {
+    /// The interval arithmetic of a proof at `bits` bits of precision: f64 intervals at
+    /// 53 bits (or fewer), MPFR intervals above (CERTIFICATION.md "Escalation").
+    pub fn of_interval_bits(bits: u32) -> Arithmetic {
+        if bits > 53 {
+            Arithmetic::Mpfr
+        } else {
+            Arithmetic::Interval
+        }
+    }
+
     /// The name used in JSON.
     pub fn as_str(self) -> &'static str {
         match self {

@@ -1,14 +1,20 @@
 //! geocert — a geometric kernel whose answers come with proofs.
 //!
 //! Operations are computed fast in f64 and certified by an interval and
-//! multiprecision layer (spec/CERTIFICATION.md). Layers, each depending only on
-//! the ones above it (ARCHITECTURE.md):
+//! multiprecision layer (docs/CERTIFICATES.md). Layers, lowest first, each importing
+//! only from the ones below it (docs/ARCHITECTURE.md; `tests/layers.rs` checks it, and
+//! that no module's submodules import each other in a cycle):
 //!
+//! * [`certificate`], [`error`] — what is proven, and typed errors;
 //! * [`num`] — numbers: the generic [`num::Real`] trait, filters, intervals, MPFR, rationals;
 //! * [`geom`] — linear objects and their exact, filtered predicates and constructions;
-//! * [`curve`], [`surface`] — parametric curves and surfaces, implicit surfaces;
+//! * [`curve`], then [`surface`] — parametric curves and surfaces, implicit surfaces;
+//! * [`walk`] — curvature-adaptive stepping over parameter domains;
 //! * [`certify`] — Krawczyk, subdivision, precision escalation, singular roots;
-//! * [`io`] — the JSON case format (spec/CASES.md).
+//! * [`ops`] — every operation's front door (`ops::intersect`, `ops::project`,
+//!   `ops::classify`); beside it `oracle`, the CGAL bridge (feature `cgal`);
+//! * [`io`] — the JSON case format (docs/FORMAT.md); beside it [`robust`], the
+//!   robustness generators and table.
 
 pub mod certificate;
 pub mod certify;

@@ -1,28 +1,11 @@
 //! The command line on curved objects (CASES.md): worked examples §16.3, §16.4, §16.6
 //! and closed forms, end to end through `geocert solve`.
 
-use std::io::Write;
-use std::process::{Command, Stdio};
+mod cli_support;
 
+/// `geocert solve` on the lines, with one and three threads (the same bytes).
 fn solve(lines: &[&str]) -> Vec<serde_json::Value> {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_geocert"))
-        .args(["solve", "-"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .spawn()
-        .expect("geocert runs");
-    child
-        .stdin
-        .take()
-        .expect("stdin")
-        .write_all(lines.join("\n").as_bytes())
-        .expect("write");
-    let out = child.wait_with_output().expect("output");
-    String::from_utf8(out.stdout)
-        .expect("utf-8")
-        .lines()
-        .map(|l| serde_json::from_str(l).expect("JSON line"))
-        .collect()
+    cli_support::solve_text(&lines.join("\n")).0
 }
 
 fn f(v: &serde_json::Value) -> f64 {

@@ -3,32 +3,15 @@
 //! field, and the exit status.
 
 use serde_json::{json, Value};
-use std::io::Write;
-use std::process::{Command, Stdio};
+use std::process::Command;
 
-/// Run `geocert solve -` on the given lines; the results and the exit code.
+mod cli_support;
+
+/// Run `geocert solve -` on the given lines (with one and three threads: the same
+/// bytes, [`cli_support::run`]); the results and the exit code.
 fn solve(lines: &[Value]) -> (Vec<Value>, i32) {
-    let mut child = Command::new(env!("CARGO_BIN_EXE_geocert"))
-        .args(["solve", "-"])
-        .stdin(Stdio::piped())
-        .stdout(Stdio::piped())
-        .stderr(Stdio::piped())
-        .spawn()
-        .expect("the binary starts");
     let input: String = lines.iter().map(|l| format!("{l}\n")).collect();
-    child
-        .stdin
-        .take()
-        .unwrap()
-        .write_all(input.as_bytes())
-        .unwrap();
-    let out = child.wait_with_output().unwrap();
-    let results = String::from_utf8(out.stdout)
-        .unwrap()
-        .lines()
-        .map(|l| serde_json::from_str(l).expect("each output line is JSON"))
-        .collect();
-    (results, out.status.code().unwrap_or(-1))
+    cli_support::solve_text(&input)
 }
 
 fn solve_one(case: Value) -> Value {

@@ -95,9 +95,34 @@ fn exit_status_says_whether_all_claims_hold() {
     };
     let good = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1]}]}});
     let bad = json!({"op": "intersect", "objects": line_plane("-1"), "claim": {"points": [{"xyz": [1, 1, 1.5]}]}});
+    // Exit bits (README "Exit status"): 1 a bad case, 4 a disputed claim; both show.
     assert_eq!(run(std::slice::from_ref(&good)), Some(0));
-    assert_eq!(run(&[good.clone(), bad]), Some(3));
-    assert_eq!(run(&[good, json!({"op": "intersect"})]), Some(1));
+    assert_eq!(run(&[good.clone(), bad.clone()]), Some(4));
+    assert_eq!(run(&[good.clone(), json!({"op": "intersect"})]), Some(1));
+    assert_eq!(run(&[json!({"op": "intersect"}), bad, good]), Some(5));
+}
+
+/// A numerically certified answer (a line across a cylinder: verified boxes, no exact
+/// values) never refutes a claim: the true crossings `(±√(1 − y²), y, z)` and points far
+/// from them are all `undecided`, and nothing is listed as missed — over a family of
+/// heights `y` from the axis to within 2⁻²² of the tangency.
+#[test]
+fn numeric_answers_never_refute_a_claim() {
+    for k in 0..12 {
+        let y = 1.0 - 0.5f64.powi(2 * k);
+        let x = (1.0 - y * y).sqrt();
+        let cylinder = json!({"type": "cylinder", "origin": [0, 0, 0], "radius": 1,
+                              "axis": [0, 0, 1], "height": [0, 1]});
+        let line = json!({"type": "line", "origin": [-3, y, 0.5], "dir": [1, 0, 0]});
+        let claim = json!({"points": [{"xyz": [x, y, 0.5]}, {"xyz": [-x, y, 0.5]},
+                                      {"xyz": [x + 0.5, y, 0.5]}], "tolerance": 1e-9});
+        let r = verify(json!({"op": "intersect", "objects": [line, cylinder], "claim": claim}));
+        assert_ne!(r["status"], "exact", "y = {y}: a numeric answer: {r}");
+        for c in r["claims"].as_array().unwrap() {
+            assert_eq!(c["verdict"], "undecided", "y = {y}: {c}");
+        }
+        assert_eq!(r["missed"], json!([]), "y = {y}");
+    }
 }
 
 proptest! {

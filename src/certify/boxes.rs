@@ -110,16 +110,18 @@ pub fn all_narrow<I: IntervalLike>(x: &[I], tol: impl Fn(&I) -> f64) -> bool {
     x.iter().all(|v| v.wid() <= tol(v))
 }
 
+/// For the tests: the f64 interval box of the sides `(lo, hi)`.
+#[cfg(test)]
+pub(crate) fn test_box(s: &[(f64, f64)]) -> IBox<crate::num::Interval> {
+    s.iter()
+        .map(|&(l, h)| crate::num::Interval::from_bounds(l, h))
+        .collect()
+}
+
 #[cfg(test)]
 mod tests {
+    use super::test_box as b;
     use super::*;
-    use crate::num::Interval;
-
-    fn b(s: &[(f64, f64)]) -> IBox<Interval> {
-        s.iter()
-            .map(|&(l, h)| Interval::from_bounds(l, h))
-            .collect()
-    }
 
     #[test]
     fn bisect_splits_the_widest_side() {

@@ -1,6 +1,6 @@
 //! Deciding a small region where subdivision got stuck — a cluster of narrow boxes
-//! around a (nearly) singular root — in one go (CERTIFICATION.md "Tangency and
-//! near-tangency"): a proven near miss (no root), two proven transversal roots, or a
+//! around a (nearly) singular root — in one go (docs/CERTIFICATES.md
+//! "verified_singular"): a proven near miss (no root), two proven transversal roots, or a
 //! `verified_singular` box (a double root of a perturbed problem, at most two roots of
 //! the exact one).
 //!

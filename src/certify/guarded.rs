@@ -156,6 +156,17 @@ impl<I: IntervalLike> Real for Guarded<I> {
             self.smooth && x.smooth && off_cut,
         )
     }
+    /// The wrapped interval's view (`None` unless it is an f64 interval).
+    fn as_f64_interval(&self) -> Option<[f64; 2]> {
+        self.value.as_f64_interval()
+    }
+    /// Smooth exactly when every argument is and the value is not empty (the fast
+    /// path's function is `C^∞` on their box, [`Real::from_f64_interval`]). The wrapped
+    /// type has no bookkeeping of its own to keep, so it is given no arguments.
+    fn from_f64_interval(bounds: [f64; 2], args: &[&Self]) -> Option<Self> {
+        let value = I::from_f64_interval(bounds, &[])?;
+        Some(Guarded::make(value, args.iter().all(|a| a.smooth)))
+    }
     fn mid(&self) -> f64 {
         self.value.mid()
     }
@@ -205,5 +216,43 @@ mod tests {
         let m = Guarded::new(MpfrInterval::from_bounds(-1.0, 1.0, 128));
         assert!(!m.ln().smooth);
         assert!(m.exp().smooth);
+    }
+
+    /// Guarded f64 intervals take the surfaces' fast f64-interval path through the
+    /// hook of [`Real::as_f64_interval`]: a NURBS jet on one span pair has exactly the
+    /// f64 interval jet as values (the fast path's: `surface::nurbs`'s tests; the
+    /// generic interval path gives other enclosures), smooth exactly when both
+    /// parameters are.
+    #[test]
+    fn guarded_intervals_take_the_fast_surface_path() {
+        use crate::surface::{nurbs::NurbsSurface, Surface};
+        let knots = vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+        let points: Vec<Vec<[f64; 3]>> = (0..4)
+            .map(|i| {
+                (0..4)
+                    .map(|j| [j as f64, i as f64, ((i * j) % 3) as f64])
+                    .collect()
+            })
+            .collect();
+        let weights: Vec<Vec<f64>> = (0..4)
+            .map(|i| (0..4).map(|j| 1.0 + ((i + j) % 3) as f64 * 0.25).collect())
+            .collect();
+        let s = NurbsSurface::new([3, 3], knots.clone(), knots, &points, Some(&weights)).unwrap();
+        let (u, v) = (
+            Interval::from_bounds(0.3, 0.31),
+            Interval::from_bounds(0.6, 0.61),
+        );
+        let plain = s.jet(&u, &v, 2);
+        let guarded = s.jet(&Guarded::new(u), &Guarded::new(v), 2);
+        let values: Vec<[Interval; 3]> =
+            guarded.iter().map(|e| e.clone().map(|g| g.value)).collect();
+        assert_eq!(values, plain);
+        assert!(guarded.iter().flatten().all(|g| g.smooth));
+        let rough = Guarded {
+            value: u,
+            smooth: false,
+        };
+        let jet = s.jet(&rough, &Guarded::new(v), 2);
+        assert!(jet.iter().flatten().all(|g| !g.smooth));
     }
 }

@@ -1,4 +1,4 @@
-//! The Krawczyk operator (CERTIFICATION.md "verified"): existence, uniqueness and
+//! The Krawczyk operator (docs/CERTIFICATES.md "verified"): existence, uniqueness and
 //! exclusion of roots of a square system in a box, at any interval precision.
 //!
 //! For a box `X`, its midpoint `m`, the interval Jacobian `J(X)` and a preconditioner
@@ -189,7 +189,8 @@ pub fn verify_near<S: System, I: CertInterval>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::{Interval, MpfrInterval, Real};
+    use crate::certify::boxes::test_box as b;
+    use crate::num::{MpfrInterval, Real};
 
     /// x² + y² = 4, x = y: roots ±(√2, √2).
     struct Circle;
@@ -203,12 +204,6 @@ mod tests {
                 x[0].clone() - &x[1],
             ]
         }
-    }
-
-    fn b(s: &[(f64, f64)]) -> Vec<Interval> {
-        s.iter()
-            .map(|&(l, h)| Interval::from_bounds(l, h))
-            .collect()
     }
 
     #[test]

@@ -1,4 +1,4 @@
-//! The precision levels of the escalation (CERTIFICATION.md "Escalation": f64 intervals,
+//! The precision levels of the escalation (docs/CERTIFICATES.md "Escalation": f64 intervals,
 //! then MPFR intervals at 128, 256, 512, … bits up to a cap) and what the generic
 //! certifier needs from an interval type beyond [`IntervalLike`]: conversions between
 //! levels and an approximate inverse for preconditioning.

@@ -1,4 +1,4 @@
-//! Certification machinery (ARCHITECTURE.md layer `certify/`, spec/CERTIFICATION.md):
+//! Certification machinery (ARCHITECTURE.md layer `certify/`, docs/CERTIFICATES.md):
 //! proofs of existence, uniqueness and absence of roots of square systems `F(x) = 0` of
 //! size 1 to 6, independent of geometry. An operation writes its system once, generic
 //! over [`crate::num::Real`] ([`System`]); this module evaluates it in f64 (Newton), in
@@ -12,7 +12,7 @@
 //!   tests, a box budget and precision escalation; `complete` exactly when nothing is
 //!   left undecided.
 //!
-//! Verdicts (CERTIFICATION.md "Verdict levels"):
+//! Verdicts (docs/CERTIFICATES.md "The four statuses"):
 //! * `verified` ([`Status::Verified`]): `Root::enclosure` contains exactly one root — the
 //!   Krawczyk operator ([`krawczyk`]) maps a box into its interior;
 //! * `verified_singular` ([`Status::VerifiedSingular`]): `Root::enclosure` contains at
@@ -43,6 +43,7 @@ pub mod dual;
 pub mod graph;
 pub mod guarded;
 pub mod krawczyk;
+mod ledger;
 pub mod level;
 pub mod linalg;
 pub mod newton;

@@ -1,5 +1,5 @@
 //! Certify one root given as a float estimate (for instance a Newton result of an
-//! operation's fast path): CERTIFICATION.md "verified" for a single solution, with the
+//! operation's fast path): docs/CERTIFICATES.md "verified" for a single solution, with the
 //! escalation f64 intervals → MPFR 128, 256, … bits, and the singular certificate when
 //! the root is (nearly) double.
 
@@ -184,15 +184,10 @@ fn root_of<I: CertInterval>(v: &VerifiedRoot<I>, bits: u32) -> Root {
 }
 
 fn verified(root: Root) -> Certified<Root> {
-    let arithmetic = if root.bits > 53 {
-        crate::certificate::Arithmetic::Mpfr
-    } else {
-        crate::certificate::Arithmetic::Interval
-    };
     Certified {
         status: root.status,
         complete: false,
-        arithmetic,
+        arithmetic: crate::certificate::Arithmetic::of_interval_bits(root.bits),
         bits: root.bits,
         reason: None,
         perturbation: root.perturbation,

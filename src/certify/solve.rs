@@ -1,174 +1,28 @@
-//! All roots of a system in a parameter box (CERTIFICATION.md "verified",
+//! All roots of a system in a parameter box (docs/CERTIFICATES.md "verified",
 //! "verified_singular", "Completeness", "Escalation"): subdivision at f64 interval
 //! precision; the boxes it cannot decide are grouped into clusters, each tried by the
 //! cluster tests at rising precision; a cluster that stays undecided is subdivided again
 //! at the next precision, up to the cap. What is left is reported as undecided, and
 //! `complete` is claimed only when nothing is.
 //!
-//! Roots found twice (a root near a bisection plane is seen from both sides, a cluster's
-//! root may also be found by a neighbour) are merged by the uniqueness regions of their
-//! Krawczyk proofs: a root unique in `X` whose twin's enclosure lies in `X` is that twin.
+//! What is proven is recorded in a [`Ledger`] (`super::ledger`), which merges roots
+//! found twice.
 
 use super::boxes::{self, IBox};
 use super::cluster::{decide_cluster, ClusterVerdict};
 use super::deflate::DoubleRoot;
 use super::krawczyk::VerifiedRoot;
-use super::level::{box_at, box_to_f64, box_to_mpfr, levels, CertInterval};
+use super::ledger::Ledger;
+use super::level::{box_at, box_to_mpfr, CertInterval};
 use super::subdivide::{clusters, subdivide};
 use super::system::{check_domain, check_system, System};
-use super::{Options, Root, Solutions, UndecidedBox};
-use crate::certificate::{Arithmetic, Certified, Status};
+use super::{Options, Solutions};
+use crate::certificate::Certified;
 use crate::error::GeomError;
 use crate::num::{Interval, MpfrInterval};
 
-/// What one call of [`solve`] has proven so far.
-#[derive(Debug)]
-pub struct Ledger {
-    /// The caller's narrowest split width.
-    pub min_width: f64,
-    levels: Vec<u32>,
-    budget: usize,
-    used: usize,
-    found: Vec<Found>,
-    undecided: Vec<UndecidedBox>,
-    excluded_volume: f64,
-    bits: u32,
-}
-
-/// A proven root (or singular box), stored exactly as MPFR intervals.
-#[derive(Debug, Clone)]
-struct Found {
-    enclosure: Vec<MpfrInterval>,
-    /// Boxes in which this root is the only one (none for a singular box).
-    regions: Vec<Vec<MpfrInterval>>,
-    estimate: Vec<f64>,
-    status: Status,
-    bits: u32,
-    perturbation: Option<f64>,
-}
-
-impl Found {
-    fn is_same_as(&self, other: &Found) -> bool {
-        let inside = |e: &[MpfrInterval], regions: &[Vec<MpfrInterval>]| {
-            regions.iter().any(|r| boxes::is_subset(e, r))
-        };
-        inside(&self.enclosure, &other.regions) || inside(&other.enclosure, &self.regions)
-    }
-
-    fn to_root(&self) -> Root {
-        Root {
-            enclosure: box_to_f64(&self.enclosure),
-            enclosure_mpfr: self.enclosure.clone(),
-            estimate: self.estimate.clone(),
-            status: self.status,
-            bits: self.bits,
-            perturbation: self.perturbation,
-            max_roots: if self.status == Status::Verified {
-                1
-            } else {
-                2
-            },
-        }
-    }
-}
-
-impl Ledger {
-    fn new(opts: &Options) -> Self {
-        Ledger {
-            min_width: opts.min_width,
-            levels: levels(opts.max_bits),
-            budget: opts.max_boxes,
-            used: 0,
-            found: Vec::new(),
-            undecided: Vec::new(),
-            excluded_volume: 0.0,
-            bits: 53,
-        }
-    }
-
-    /// Count one box against the budget; false once it is spent.
-    pub fn take_box(&mut self) -> bool {
-        self.take(1)
-    }
-
-    fn take(&mut self, k: usize) -> bool {
-        if self.used + k > self.budget {
-            return false;
-        }
-        self.used += k;
-        true
-    }
-
-    /// Record an undecided box (outward in doubles) and why.
-    pub fn undecided<I: CertInterval>(&mut self, x: &[I], reason: &str) {
-        self.undecided.push(UndecidedBox {
-            enclosure: box_to_f64(x),
-            reason: reason.to_string(),
-        });
-    }
-
-    /// Record that a part of the domain of volume `vol` holds no root.
-    pub fn exclude(&mut self, vol: f64, bits: u32) {
-        self.excluded_volume += vol;
-        self.bits = self.bits.max(bits);
-    }
-
-    /// Record a verified root, merging it with an earlier proof of the same root.
-    pub fn root<I: CertInterval>(&mut self, v: VerifiedRoot<I>, bits: u32) {
-        let enclosure = box_to_mpfr(&v.enclosure);
-        let f = Found {
-            estimate: boxes::midpoint_f64(&enclosure),
-            enclosure,
-            regions: vec![box_to_mpfr(&v.region)],
-            status: Status::Verified,
-            bits,
-            perturbation: None,
-        };
-        self.bits = self.bits.max(bits);
-        for i in 0..self.found.len() {
-            let e = &mut self.found[i];
-            if e.status != Status::Verified {
-                continue;
-            }
-            if e.is_same_as(&f) {
-                if let Some(both) = boxes::intersection(&e.enclosure, &f.enclosure) {
-                    e.estimate = boxes::midpoint_f64(&both);
-                    e.enclosure = both;
-                }
-                e.regions.extend(f.regions);
-                e.bits = e.bits.min(f.bits);
-                return;
-            }
-            if boxes::meets(&e.enclosure, &f.enclosure) {
-                // neither proof covers the other's root: one root or two, undecided
-                let e = self.found.remove(i);
-                let hull = boxes::hull(&e.enclosure, &f.enclosure);
-                self.undecided(
-                    &hull,
-                    "two proven roots could not be told apart or identified",
-                );
-                return;
-            }
-        }
-        self.found.push(f);
-    }
-
-    /// Record a `verified_singular` box.
-    pub fn singular<I: CertInterval>(&mut self, enclosure: &[I], d: &DoubleRoot<I>, bits: u32) {
-        self.bits = self.bits.max(bits);
-        self.found.push(Found {
-            enclosure: box_to_mpfr(enclosure),
-            regions: Vec::new(),
-            estimate: boxes::midpoint_f64(&d.x),
-            status: Status::VerifiedSingular,
-            bits,
-            perturbation: Some(d.perturbation()),
-        });
-    }
-}
-
 /// Every root of `sys` in the box `domain` (module doc), with the certificate of
-/// CERTIFICATION.md: each root `verified` (unique in its box) or `verified_singular`;
+/// docs/CERTIFICATES.md: each root `verified` (unique in its box) or `verified_singular`;
 /// `complete` exactly when no part of the domain is left undecided.
 ///
 /// Errors: a system of size 0 or above [`super::system::MAX_DIM`], or one whose `eval`
@@ -189,55 +43,7 @@ pub fn solve<S: System>(
         .collect();
     let mut ledger = Ledger::new(opts);
     decide(sys, vec![dom.clone()], 0, &mut ledger);
-
-    let mut roots = Vec::new();
-    let mut boundary_roots = Vec::new();
-    for f in &ledger.found {
-        if boxes::is_subset(&f.enclosure, &dom) {
-            roots.push(f.to_root());
-        } else if boxes::meets(&f.enclosure, &dom) {
-            boundary_roots.push(f.to_root());
-        }
-    }
-    let status = roots
-        .iter()
-        .chain(&boundary_roots)
-        .fold(Status::Verified, |s, r| s.weakest(r.status));
-    let perturbation = roots
-        .iter()
-        .chain(&boundary_roots)
-        .filter_map(|r| r.perturbation)
-        .reduce(f64::max);
-    let complete = ledger.undecided.is_empty();
-    let reason = ledger.undecided.first().map(|u| {
-        format!(
-            "{} undecided box(es); first: {}",
-            ledger.undecided.len(),
-            u.reason
-        )
-    });
-    let bits = ledger.bits;
-    let value = Solutions {
-        roots,
-        boundary_roots,
-        undecided: ledger.undecided,
-        excluded_volume: ledger.excluded_volume,
-        domain_volume: boxes::volume(&dom),
-        boxes: ledger.used,
-    };
-    Ok(Certified {
-        value,
-        status,
-        complete,
-        arithmetic: if bits > 53 {
-            Arithmetic::Mpfr
-        } else {
-            Arithmetic::Interval
-        },
-        bits,
-        reason,
-        perturbation,
-    })
+    Ok(ledger.finish(&dom))
 }
 
 /// Decide the boxes `bxs` starting at precision level `level` (module doc).

@@ -1,4 +1,4 @@
-//! Subdivision of a parameter box at one precision (CERTIFICATION.md "Completeness"):
+//! Subdivision of a parameter box at one precision (docs/CERTIFICATES.md "Completeness"):
 //! every box is excluded (its image misses 0, or its Krawczyk image misses it), decided
 //! by a unique root (Krawczyk on the box grown by a sixteenth, so that roots on a
 //! bisection plane are still caught), narrowed by `X ∩ K(X)`, or bisected — until it is
@@ -7,8 +7,8 @@
 
 use super::boxes::{self, IBox};
 use super::krawczyk::{excluded_by_image, image, krawczyk, tighten, Krawczyk, VerifiedRoot};
+use super::ledger::Ledger;
 use super::level::CertInterval;
-use super::solve::Ledger;
 use super::system::System;
 use crate::num::IntervalLike;
 
@@ -169,13 +169,7 @@ pub fn clusters<I: IntervalLike>(bxs: Vec<IBox<I>>) -> Vec<Vec<IBox<I>>> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::num::Interval;
-
-    fn b(s: &[(f64, f64)]) -> IBox<Interval> {
-        s.iter()
-            .map(|&(l, h)| Interval::from_bounds(l, h))
-            .collect()
-    }
+    use crate::certify::boxes::test_box as b;
 
     #[test]
     fn touching_boxes_form_one_cluster() {

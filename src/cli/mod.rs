@@ -1,6 +1,10 @@
 //! Sub-commands of the binary.
 
 pub mod demo;
+pub mod exit;
+pub mod generate;
+pub mod output;
+pub mod progress;
 pub mod robustness;
-pub mod solve;
-pub mod verify;
+pub mod run;
+pub mod table;

@@ -1,4 +1,4 @@
-//! Analytic curve primitives of OPERATIONS.md §1.5 (spec/CASES.md parametrisations):
+//! Analytic curve primitives of OPERATIONS.md §1.5 (docs/FORMAT.md parametrisations):
 //! the framed curves circle, ellipse, hyperbola, parabola and cylindrical helix,
 //! `c = p + x(t) X + y(t) Y + z(t) Z` in the frame of
 //! [`Frame`]; their 2D versions `circle2`, `ellipse2`; circular and elliptic arcs
@@ -16,7 +16,7 @@ use crate::error::{require_finite, require_finite_all, GeomError};
 use crate::num::Real;
 use std::f64::consts::TAU;
 
-/// The shape of an analytic curve in its local coordinates (CASES.md parametrisations).
+/// The shape of an analytic curve in its local coordinates (docs/FORMAT.md parametrisations).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Shape {
     /// `r(cos t, sin t, 0)`.
@@ -221,7 +221,7 @@ impl Curve<3> for Analytic {
     }
 }
 
-/// `circle2` / `ellipse2`: `center + (a cos t, b sin t)` (CASES.md; a circle has
+/// `circle2` / `ellipse2`: `center + (a cos t, b sin t)` (docs/FORMAT.md; a circle has
 /// `a = b = r`), no frame.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Analytic2 {

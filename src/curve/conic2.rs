@@ -1,13 +1,13 @@
-//! The implicit conic of the plane (spec/CASES.md `conic2`; OPERATIONS.md §1.7):
+//! The implicit conic of the plane (docs/FORMAT.md `conic2`; OPERATIONS.md §1.7):
 //! `F(x, y) = a x² + b xy + c y² + d x + e y + f`, i.e. `a₁₁ = a`, `a₁₂ = b/2`,
 //! `a₂₂ = c`, `a₁₃ = d/2`, `a₂₃ = e/2`, `a₃₃ = f` in the matrix form of (1.19).
 //! Implements [`Implicit<2>`] (value, gradient, Hessian, generic over [`Real`]: each a
 //! polynomial, so interval arguments give enclosures) and the exact classification by
 //! the invariants (1.19), decided in rationals.
 
+use super::implicit::{Implicit, ImplicitJet};
 use crate::error::{require_finite_all, GeomError};
 use crate::num::Real;
-use crate::surface::{Implicit, ImplicitJet};
 use rug::Rational;
 use std::cmp::Ordering;
 

@@ -1,5 +1,5 @@
 //! The local frame of analytic curves and surfaces (OPERATIONS.md §1.5 "origin `p`,
-//! orthonormal `i₁, i₂, i₃`"; spec/CASES.md "Frames"): `Z` is `axis` normalised; `X` is
+//! orthonormal `i₁, i₂, i₃`"; docs/FORMAT.md "Frames"): `Z` is `axis` normalised; `X` is
 //! `ref` made orthogonal to `Z` and normalised; without `ref`, `e` is the coordinate
 //! unit vector least aligned with `Z` (the smallest `|axis_i|`, first in x, y, z order
 //! on ties), so that axis +z gives `X = +x`; `Y = Z × X`.
@@ -10,8 +10,6 @@
 //! `w = r|a|² − (r·a)a` (the exact projection of `r` scaled by `|a|²`),
 //! `Z = a/|a|`, `X = w/|w|`, `Y = (a × w)/(|a||w|)`,
 //! so an interval evaluation encloses the exact orthonormal frame of the double inputs.
-
-use std::any::TypeId;
 
 use crate::error::{require_finite_all, GeomError};
 use crate::geom::objects::Coord;
@@ -118,7 +116,7 @@ impl Frame {
     /// an enclosing [`Real`] operation); for f64 it is the f64 evaluation of the same
     /// formula, computed once.
     pub fn axes<T: Real>(&self, like: &T) -> [[T; 3]; 3] {
-        if TypeId::of::<T>() == TypeId::of::<f64>() {
+        if T::IS_F64 {
             return self.cached.map(|a| lift(like, &a));
         }
         self.compute_axes(like)

@@ -1,4 +1,4 @@
-//! Lines and segments of OPERATIONS.md §1.5 ([Y 2.2.1–2.2.2]; spec/CASES.md `line`,
+//! Lines and segments of OPERATIONS.md §1.5 ([Y 2.2.1–2.2.2]; docs/FORMAT.md `line`,
 //! `segment`, `line2`, `segment2`) in any dimension. Affine in `t`, so an interval
 //! parameter gives the exact range of values up to outward rounding.
 

@@ -1,4 +1,4 @@
-//! Parametric curves (OPERATIONS.md §1.1–§1.2, §1.5; spec/CASES.md curve types).
+//! Parametric curves (OPERATIONS.md §1.1–§1.2, §1.5; docs/FORMAT.md curve types).
 //!
 //! A curve supplies only its value and derivatives, generic over the number type
 //! ([`Real`]: `f64`, [`crate::num::Interval`], [`crate::num::MpfrInterval`]), so that
@@ -6,7 +6,7 @@
 //! Evaluated on an interval parameter, [`Curve::jet`] encloses every value and
 //! derivative over that interval.
 //!
-//! * [`frame`] — the local frame of analytic curves (CASES.md frame rule);
+//! * [`frame`] — the local frame of analytic curves (docs/FORMAT.md frame rule);
 //! * [`lines`] — line and segment (any dimension);
 //! * [`analytic`] — circle, ellipse, hyperbola, parabola, helix, and the 2D circle and
 //!   ellipse; circular and elliptic arcs;
@@ -26,6 +26,7 @@ pub mod derived;
 pub mod diffgeo;
 pub mod domain;
 pub mod frame;
+pub mod implicit;
 pub mod lines;
 pub mod nurbs;
 pub mod polyline;

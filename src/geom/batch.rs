@@ -223,14 +223,14 @@ pub(crate) mod testing {
         (bits, out)
     }
 
-    /// A vector of `unit()` coordinates from the `robust` generators' random stream.
-    pub(crate) fn unit_vector(r: &mut crate::robust::rng::Rng) -> nalgebra::Vector3<f64> {
+    /// A vector of `unit()` coordinates from the project's random stream.
+    pub(crate) fn unit_vector(r: &mut crate::num::rng::Rng) -> nalgebra::Vector3<f64> {
         nalgebra::Vector3::new(r.unit(), r.unit(), r.unit())
     }
 
     /// A generic plane from the seed `k`: parametric, or implicit when `implicit`.
     pub(crate) fn generic_plane(k: u64, implicit: bool) -> crate::geom::Plane<f64> {
-        let mut r = crate::robust::rng::Rng::new(k);
+        let mut r = crate::num::rng::Rng::new(k);
         let a = unit_vector(&mut r);
         if implicit {
             crate::geom::Plane::implicit(a, r.unit()).unwrap()

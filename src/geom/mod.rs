@@ -14,6 +14,7 @@
 mod batch;
 pub mod data;
 mod exact_tier;
+pub mod line_line;
 pub mod line_plane;
 pub mod lines2;
 pub mod objects;
@@ -23,4 +24,4 @@ mod raw;
 pub mod three_planes;
 
 pub use data::{Linear, Linear2};
-pub use objects::{Coord, Line, Line2, Plane, Segment, Segment2};
+pub use objects::{Coord, Line, Line2, ParamRange, Plane, Segment, Segment2};

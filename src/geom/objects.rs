@@ -1,11 +1,11 @@
-//! Linear objects (CASES.md "Objects"; OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8),
+//! Linear objects (docs/FORMAT.md "Objects"; OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8),
 //! generic over the coordinate type: `f64` (each double taken as an exact value) or
 //! `rug::Rational` (exact inputs, e.g. from `"p/q"` strings). Constructors validate and
 //! never normalise or round: a zero direction, collinear plane vectors (decided exactly),
 //! a zero normal, an inverted range, a degenerate segment and non-finite numbers are
 //! typed errors naming the field.
 
-use nalgebra::{Vector2, Vector3};
+use nalgebra::{SVector, Vector3};
 use rug::Rational;
 use std::fmt::Debug;
 
@@ -21,6 +21,8 @@ pub trait Coord: Clone + PartialEq + Debug + 'static {
     fn to_rational(&self) -> Rational;
     /// Exactly zero.
     fn is_zero(&self) -> bool;
+    /// The number 0.
+    fn zero_coord() -> Self;
     /// Exactly `self ≤ other`.
     fn le(&self, other: &Self) -> bool;
     /// Whether the cross product of two vectors is exactly zero.
@@ -36,6 +38,9 @@ impl Coord for f64 {
     }
     fn is_zero(&self) -> bool {
         *self == 0.0
+    }
+    fn zero_coord() -> Self {
+        0.0
     }
     fn le(&self, other: &Self) -> bool {
         self <= other
@@ -67,6 +72,9 @@ impl Coord for Rational {
     }
     fn is_zero(&self) -> bool {
         self.cmp0().is_eq()
+    }
+    fn zero_coord() -> Self {
+        Rational::new()
     }
     fn le(&self, other: &Self) -> bool {
         self <= other
@@ -112,54 +120,139 @@ fn check_range<T: Coord>(range: &Option<[T; 2]>) -> Result<(), GeomError> {
     Ok(())
 }
 
-/// A line `c(t) = origin + t·dir` (OPERATIONS.md §3.1), optionally restricted to
-/// `t ∈ range` (closed).
+/// The parameter range of a line (CASES.md `range`, extended by one-sided ranges):
+/// closed `[lo, hi]`, or one-sided, `[lo, +∞)` or `(−∞, hi]`, which makes the line a
+/// ray. An infinite end has no number (rationals have none): it is the missing end.
 #[derive(Debug, Clone, PartialEq)]
-pub struct Line<T: Coord> {
-    origin: Vector3<T>,
-    dir: Vector3<T>,
-    range: Option<[T; 2]>,
+pub enum ParamRange<T> {
+    /// `t ∈ [lo, hi]`.
+    Closed([T; 2]),
+    /// `t ∈ [lo, +∞)`: a ray running towards increasing `t`.
+    AtLeast(T),
+    /// `t ∈ (−∞, hi]`: a ray running towards decreasing `t`.
+    AtMost(T),
 }
 
-impl<T: Coord> Line<T> {
+impl<T> ParamRange<T> {
+    /// The lower end, `None` for `−∞`.
+    pub fn lo(&self) -> Option<&T> {
+        match self {
+            ParamRange::Closed([lo, _]) | ParamRange::AtLeast(lo) => Some(lo),
+            ParamRange::AtMost(_) => None,
+        }
+    }
+    /// The upper end, `None` for `+∞`.
+    pub fn hi(&self) -> Option<&T> {
+        match self {
+            ParamRange::Closed([_, hi]) | ParamRange::AtMost(hi) => Some(hi),
+            ParamRange::AtLeast(_) => None,
+        }
+    }
+}
+
+fn check_param_range<T: Coord>(range: &Option<ParamRange<T>>) -> Result<(), GeomError> {
+    match range {
+        None => Ok(()),
+        Some(ParamRange::Closed([lo, hi])) => check_range(&Some([lo.clone(), hi.clone()])),
+        Some(ParamRange::AtLeast(lo)) => lo.check_finite("range[0]"),
+        Some(ParamRange::AtMost(hi)) => hi.check_finite("range[1]"),
+    }
+}
+
+/// A line `c(t) = origin + t·dir` in `D` dimensions (OPERATIONS.md §3.1; 3D unless
+/// said otherwise, [`Line2`] in the plane), optionally restricted to `t ∈ range`
+/// (closed, or one-sided: a ray, see [`ParamRange`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Line<T: Coord, const D: usize = 3> {
+    origin: SVector<T, D>,
+    dir: SVector<T, D>,
+    range: Option<ParamRange<T>>,
+}
+
+/// A 2D line `c(t) = origin + t·dir`, optionally restricted to `t ∈ range`.
+pub type Line2<T> = Line<T, 2>;
+
+impl<T: Coord, const D: usize> Line<T, D> {
     /// An unbounded line. Errors: `non_finite` (`origin[i]`, `dir[i]`), `zero_direction` (`dir`).
-    pub fn new(origin: Vector3<T>, dir: Vector3<T>) -> Result<Self, GeomError> {
-        Self::with_range(origin, dir, None)
+    pub fn new(origin: SVector<T, D>, dir: SVector<T, D>) -> Result<Self, GeomError> {
+        Self::with_param_range(origin, dir, None)
     }
     /// A line restricted to `t ∈ [range[0], range[1]]`; also `empty_domain` (`range`)
     /// when `range[0] > range[1]`.
     pub fn with_range(
-        origin: Vector3<T>,
-        dir: Vector3<T>,
+        origin: SVector<T, D>,
+        dir: SVector<T, D>,
         range: Option<[T; 2]>,
+    ) -> Result<Self, GeomError> {
+        Self::with_param_range(origin, dir, range.map(ParamRange::Closed))
+    }
+    /// A line restricted to a closed or one-sided range (errors as [`Line::with_range`];
+    /// `non_finite` names the finite end of a one-sided range, `range[0]` or `range[1]`).
+    pub fn with_param_range(
+        origin: SVector<T, D>,
+        dir: SVector<T, D>,
+        range: Option<ParamRange<T>>,
     ) -> Result<Self, GeomError> {
         check_vec("origin", origin.as_slice())?;
         check_vec("dir", dir.as_slice())?;
         nonzero("dir", dir.as_slice())?;
-        check_range(&range)?;
+        check_param_range(&range)?;
         Ok(Line { origin, dir, range })
     }
-    pub fn origin(&self) -> &Vector3<T> {
+    /// The ray `origin + t·dir`, `t ≥ 0` (CGAL's `Ray_3(origin, dir)`).
+    pub fn ray(origin: SVector<T, D>, dir: SVector<T, D>) -> Result<Self, GeomError> {
+        Self::with_param_range(origin, dir, Some(ParamRange::AtLeast(T::zero_coord())))
+    }
+    pub fn origin(&self) -> &SVector<T, D> {
         &self.origin
     }
-    pub fn dir(&self) -> &Vector3<T> {
+    pub fn dir(&self) -> &SVector<T, D> {
         &self.dir
     }
+    /// The closed range `[lo, hi]`, if the line has one. `None` for an unbounded line
+    /// **and for a ray**: code that must honour rays reads [`Line::param_range`] or
+    /// [`Line::bounds`] (and code that reads only this must refuse rays, see
+    /// [`Line::is_ray`]).
     pub fn range(&self) -> Option<&[T; 2]> {
+        match &self.range {
+            Some(ParamRange::Closed(r)) => Some(r),
+            _ => None,
+        }
+    }
+    /// The range as given: closed, one-sided or none.
+    pub fn param_range(&self) -> Option<&ParamRange<T>> {
         self.range.as_ref()
+    }
+    /// The ends of the range, `None` for an infinite end.
+    pub fn bounds(&self) -> (Option<&T>, Option<&T>) {
+        match &self.range {
+            None => (None, None),
+            Some(r) => (r.lo(), r.hi()),
+        }
+    }
+    /// Whether the range is one-sided.
+    pub fn is_ray(&self) -> bool {
+        matches!(
+            self.range,
+            Some(ParamRange::AtLeast(_) | ParamRange::AtMost(_))
+        )
     }
 }
 
-/// A segment `c(t) = (1 − t)·a + t·b`, `t ∈ [0, 1]`.
+/// A segment `c(t) = (1 − t)·a + t·b`, `t ∈ [0, 1]`, in `D` dimensions (3D unless said
+/// otherwise, [`Segment2`] in the plane).
 #[derive(Debug, Clone, PartialEq)]
-pub struct Segment<T: Coord> {
-    a: Vector3<T>,
-    b: Vector3<T>,
+pub struct Segment<T: Coord, const D: usize = 3> {
+    a: SVector<T, D>,
+    b: SVector<T, D>,
 }
 
-impl<T: Coord> Segment<T> {
+/// A 2D segment `(1 − t)·a + t·b`, `t ∈ [0, 1]`.
+pub type Segment2<T> = Segment<T, 2>;
+
+impl<T: Coord, const D: usize> Segment<T, D> {
     /// Errors: `non_finite` (`a[i]`, `b[i]`), `zero_direction` (`b`) when `a == b`.
-    pub fn new(a: Vector3<T>, b: Vector3<T>) -> Result<Self, GeomError> {
+    pub fn new(a: SVector<T, D>, b: SVector<T, D>) -> Result<Self, GeomError> {
         check_vec("a", a.as_slice())?;
         check_vec("b", b.as_slice())?;
         if a == b {
@@ -167,10 +260,10 @@ impl<T: Coord> Segment<T> {
         }
         Ok(Segment { a, b })
     }
-    pub fn a(&self) -> &Vector3<T> {
+    pub fn a(&self) -> &SVector<T, D> {
         &self.a
     }
-    pub fn b(&self) -> &Vector3<T> {
+    pub fn b(&self) -> &SVector<T, D> {
         &self.b
     }
 }
@@ -214,66 +307,5 @@ impl<T: Coord> Plane<T> {
             });
         }
         Ok(Plane::Implicit { normal, d })
-    }
-}
-
-/// A 2D line `c(t) = origin + t·dir`, optionally restricted to `t ∈ range`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Line2<T: Coord> {
-    origin: Vector2<T>,
-    dir: Vector2<T>,
-    range: Option<[T; 2]>,
-}
-
-impl<T: Coord> Line2<T> {
-    /// Errors as [`Line::new`].
-    pub fn new(origin: Vector2<T>, dir: Vector2<T>) -> Result<Self, GeomError> {
-        Self::with_range(origin, dir, None)
-    }
-    /// Errors as [`Line::with_range`].
-    pub fn with_range(
-        origin: Vector2<T>,
-        dir: Vector2<T>,
-        range: Option<[T; 2]>,
-    ) -> Result<Self, GeomError> {
-        check_vec("origin", origin.as_slice())?;
-        check_vec("dir", dir.as_slice())?;
-        nonzero("dir", dir.as_slice())?;
-        check_range(&range)?;
-        Ok(Line2 { origin, dir, range })
-    }
-    pub fn origin(&self) -> &Vector2<T> {
-        &self.origin
-    }
-    pub fn dir(&self) -> &Vector2<T> {
-        &self.dir
-    }
-    pub fn range(&self) -> Option<&[T; 2]> {
-        self.range.as_ref()
-    }
-}
-
-/// A 2D segment `(1 − t)·a + t·b`, `t ∈ [0, 1]`.
-#[derive(Debug, Clone, PartialEq)]
-pub struct Segment2<T: Coord> {
-    a: Vector2<T>,
-    b: Vector2<T>,
-}
-
-impl<T: Coord> Segment2<T> {
-    /// Errors as [`Segment::new`].
-    pub fn new(a: Vector2<T>, b: Vector2<T>) -> Result<Self, GeomError> {
-        check_vec("a", a.as_slice())?;
-        check_vec("b", b.as_slice())?;
-        if a == b {
-            return Err(GeomError::ZeroDirection { field: "b".into() });
-        }
-        Ok(Segment2 { a, b })
-    }
-    pub fn a(&self) -> &Vector2<T> {
-        &self.a
-    }
-    pub fn b(&self) -> &Vector2<T> {
-        &self.b
     }
 }

@@ -3,7 +3,7 @@
 //!
 //! Line `c(t) = c₀ + t c'`, `w = p − c₀`: `t = (w·c')/|c'|²`, foot
 //! `(c₀|c'|² + (w·c')c')/|c'|²`, squared distance `|w × c'|²/|c'|²`. On a bounded domain
-//! the stationary foot is reported only if `t` lies in it (CASES.md "Projections"), and
+//! the stationary foot is reported only if `t` lies in it (docs/FORMAT.md "Projections"), and
 //! `nearest` clamps `t` to the closed domain (then the squared distance is `|p − c(t)|²`).
 //!
 //! Plane with normal `N`, `f(p) = N·(p − s₀)` (or `n·p + d`): foot

@@ -1,4 +1,4 @@
-//! Answers of the front door → result records (CASES.md "Results"): a field-for-field
+//! Answers of the front door → result records (docs/FORMAT.md "Results"): a field-for-field
 //! translation; exact rationals are written as `"p/q"` strings.
 
 use rug::Rational;
@@ -55,7 +55,7 @@ fn line(l: &LineAnswer) -> LineOut {
     }
 }
 
-fn curve(c: &CurveAnswer) -> CurveOut {
+fn curve(c: &CurveAnswer, singular: &[SingularPointOut]) -> CurveOut {
     let end = |e: CurveEnd| CurveEndOut {
         kind: e.as_str(),
         index: match e {
@@ -73,6 +73,18 @@ fn curve(c: &CurveAnswer) -> CurveOut {
                 params: v.params.clone(),
             })
             .collect(),
+        singular_points: {
+            let mut at: Vec<usize> = c
+                .ends
+                .iter()
+                .filter_map(|e| match e {
+                    CurveEnd::Singular(i) => Some(*i),
+                    _ => None,
+                })
+                .collect();
+            at.dedup();
+            at.iter().filter_map(|&i| singular.get(i).cloned()).collect()
+        },
         ends: c.ends.map(end),
         status: c.status.as_str(),
         distance_bound: c.distance_bound,
@@ -104,8 +116,10 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
         }
         Answer::Side(_, nearest) => r.points = nearest.as_ref().map(|p| vec![point(p)]),
         Answer::Curves(c) => {
-            r.curves = Some(c.curves.iter().map(curve).collect());
-            r.singular_points = Some(c.singular_points.iter().map(singular_point).collect());
+            let singular: Vec<SingularPointOut> =
+                c.singular_points.iter().map(singular_point).collect();
+            r.curves = Some(c.curves.iter().map(|k| curve(k, &singular)).collect());
+            r.singular_points = Some(singular);
             if !c.points.is_empty() {
                 r.points = Some(c.points.iter().map(point).collect());
             }

@@ -1,4 +1,4 @@
-//! Specs of the case format → the typed shapes of the front door (CASES.md "Objects",
+//! Specs of the case format → the typed shapes of the front door (docs/FORMAT.md "Objects",
 //! "Numbers"), with every error's field path prefixed by the object's place in the
 //! case (`objects[1].dir[2]`).
 //!

@@ -1,11 +1,15 @@
-//! Cases of the command line (spec/CASES.md "Cases"): reading a file of cases and
+//! Cases of the command line (docs/FORMAT.md "Cases"): reading a file of cases and
 //! turning each into a typed [`Case`], or an error naming the offending field.
 
 use super::de::deserialize_at;
-use super::number::{Double, Num};
+use super::lenient::salvage;
+use super::number::{abbreviate, shortest, Double, Num};
 use super::objects::{parse_object, ObjectSpec};
+use super::stream::{CaseStream, Chunk};
+use super::strict::{parse_strict, Parsed, StrictError};
 use crate::error::GeomError;
 use serde::Deserialize;
+use std::io::BufRead;
 
 /// The operation a case asks for.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize)]
@@ -37,7 +41,7 @@ impl Op {
     }
 }
 
-/// `options` of a case (CASES.md; OPERATIONS.md §12 for ε and δ).
+/// `options` of a case (docs/FORMAT.md; OPERATIONS.md §12 for ε and δ).
 #[derive(Debug, Clone, Default, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Options {
@@ -45,13 +49,16 @@ pub struct Options {
     pub tolerance: Option<Double>,
     /// The equality tolerance δ of the float path (§12).
     pub equal_tolerance: Option<Double>,
-    /// The precision cap of MPFR escalation, in bits (default 512; CERTIFICATION.md
-    /// names 4096, reachable by setting it).
+    /// The precision cap of MPFR escalation, in bits (default 512; the specification's
+    /// 4096 is reachable by setting it; docs/CERTIFICATES.md "Escalation").
     pub max_bits: Option<u32>,
     /// The box budget of subdivision.
     pub max_boxes: Option<u64>,
     /// Surface ∩ surface: the largest chord-to-curve distance of the polylines.
     pub chord_tolerance: Option<Double>,
+    /// A time budget for the case, in seconds (`geocert solve --time-limit` gives the
+    /// default). Read and carried here; the operations do not enforce it yet.
+    pub time_limit: Option<Double>,
     /// Also report the exact rationals of exact results (`"p/q"` strings).
     #[serde(default)]
     pub exact: bool,
@@ -109,11 +116,37 @@ pub struct ReadCase {
     pub case: Result<Case, GeomError>,
 }
 
+/// A case read from a stream ([`read_stream`]): the [`ReadCase`], the line it starts
+/// on, and the raw text of its `id` when that is a number, so that the id can be
+/// echoed exactly as written (serde_json reads `18446744073709551616` or `1.50` as a
+/// double, which prints differently).
+#[derive(Debug, Clone)]
+pub struct Record {
+    pub read: ReadCase,
+    pub line: usize,
+    pub raw_id: Option<String>,
+}
+
 /// Parse one JSON value into a case, naming the field path of any error
-/// (`objects[1].dir[2]`).
+/// (`objects[1].dir[2]`; a missing `op` is reported as field `op`).
 pub fn parse_case(value: serde_json::Value) -> ReadCase {
     let id = value.get("id").cloned().unwrap_or(serde_json::Value::Null);
-    let case = deserialize_at::<RawCase>(value, "").and_then(|raw| {
+    if !value.is_object() {
+        let error = GeomError::Format {
+            field: String::new(),
+            message: format!("a case is a JSON object, not {}", json_kind(&value)),
+        };
+        return ReadCase {
+            id,
+            case: Err(error),
+        };
+    }
+    // Plain serde first (no path tracking); on an error, again with paths to name it.
+    let raw = match RawCase::deserialize(&value) {
+        Ok(raw) => Ok(raw),
+        Err(_) => deserialize_at::<RawCase>(value, "").map_err(name_missing_field),
+    };
+    let case = raw.and_then(|raw| {
         let objects = raw
             .objects
             .into_iter()
@@ -122,6 +155,14 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
             .collect::<Result<Vec<_>, _>>()?;
         let onto = raw.onto.map(|v| parse_object(v, "onto")).transpose()?;
         let shell = raw.shell.map(|v| parse_object(v, "shell")).transpose()?;
+        if let Some(Double(t)) = raw.options.time_limit {
+            if t.is_nan() || t <= 0.0 {
+                return Err(GeomError::InvalidValue {
+                    field: "options.time_limit".into(),
+                    reason: format!("{} is not a positive number of seconds", shortest(t)),
+                });
+            }
+        }
         Ok(Case {
             id: raw.id,
             op: raw.op,
@@ -138,37 +179,184 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
     ReadCase { id, case }
 }
 
-/// Read every case of a file: a JSON array of cases, or JSON Lines (one case per
-/// line; blank lines ignored). A line that is not valid JSON becomes an error case
-/// (field `line N`), so one bad case does not stop the others.
-pub fn read_cases(text: &str) -> Vec<ReadCase> {
-    let trimmed = text.trim_start();
-    if trimmed.starts_with('[') {
-        return match serde_json::from_str::<Vec<serde_json::Value>>(trimmed) {
-            Ok(values) => values.into_iter().map(parse_case).collect(),
-            Err(e) => vec![syntax_error("", &e)],
-        };
+/// serde reports a missing required field at the path of the object that lacks it;
+/// the field to name is the missing one (`op`, not the whole case).
+fn name_missing_field(e: GeomError) -> GeomError {
+    match e {
+        GeomError::Format { field, message } if field.is_empty() => {
+            let missing = message
+                .strip_prefix("missing field `")
+                .and_then(|rest| rest.split('`').next())
+                .map(str::to_string);
+            GeomError::Format {
+                field: missing.unwrap_or(field),
+                message,
+            }
+        }
+        other => other,
     }
-    text.lines()
-        .enumerate()
-        .filter(|(_, line)| !line.trim().is_empty())
-        .map(
-            |(n, line)| match serde_json::from_str::<serde_json::Value>(line) {
-                Ok(value) => parse_case(value),
-                Err(e) => syntax_error(&format!("line {}", n + 1), &e),
-            },
-        )
+}
+
+fn json_kind(value: &serde_json::Value) -> &'static str {
+    match value {
+        serde_json::Value::Null => "null",
+        serde_json::Value::Bool(_) => "a boolean",
+        serde_json::Value::Number(_) => "a number",
+        serde_json::Value::String(_) => "a string",
+        serde_json::Value::Array(_) => "an array",
+        serde_json::Value::Object(_) => "an object",
+    }
+}
+
+/// Read every case of a text: a JSON array of cases, or JSON Lines (one case per
+/// line; blank lines ignored). A line that is not valid JSON becomes an error case
+/// (field `line N`), so one bad case does not stop the others ([`super::stream`]).
+pub fn read_cases(text: &str) -> Vec<ReadCase> {
+    read_stream(text.as_bytes())
+        .map(|r| match r {
+            Ok(record) => record.read,
+            // Reading from memory cannot fail; keep the error as a record anyway.
+            Err(e) => input_error(&e),
+        })
         .collect()
 }
 
-fn syntax_error(field: &str, e: &serde_json::Error) -> ReadCase {
+/// Read the cases of a stream one at a time, in input order (see [`super::stream`]
+/// for what one bad line or element costs). An `Err` is a failure to read the input
+/// itself; the stream ends after it.
+pub fn read_stream<R: BufRead>(input: R) -> impl Iterator<Item = std::io::Result<Record>> {
+    let mut stream = CaseStream::new(input);
+    let mut failed = false;
+    std::iter::from_fn(move || {
+        if failed {
+            return None;
+        }
+        let next = stream.next_chunk().transpose()?;
+        failed = next.is_err();
+        Some(next.map(|chunk| read_chunk(&chunk)))
+    })
+}
+
+fn input_error(e: &std::io::Error) -> ReadCase {
     ReadCase {
         id: serde_json::Value::Null,
         case: Err(GeomError::Format {
-            field: field.to_string(),
-            message: e.to_string(),
+            field: String::new(),
+            message: format!("cannot read the input: {e}"),
         }),
     }
+}
+
+/// Parse one case cut from the input: UTF-8, then JSON (duplicate keys refused,
+/// [`super::strict`]), then the case format. A case that is not JSON is looked at
+/// again leniently ([`super::lenient`]) to name a NaN, infinite or out-of-range
+/// number's field and to recover the id.
+pub fn read_chunk(chunk: &Chunk) -> Record {
+    let line_field = || format!("line {}", chunk.line);
+    if let Some(problem) = &chunk.problem {
+        let error = format_error(line_field(), problem.clone());
+        return record(chunk, serde_json::Value::Null, None, Err(error));
+    }
+    let bytes = chunk
+        .bytes
+        .strip_prefix(&[0xEF, 0xBB, 0xBF])
+        .unwrap_or(&chunk.bytes);
+    let text = match std::str::from_utf8(bytes) {
+        Ok(text) => text,
+        Err(e) => {
+            let salvage = salvage(&String::from_utf8_lossy(bytes));
+            let message = format!(
+                "not UTF-8: invalid byte {:#04x} at column {}",
+                bytes[e.valid_up_to()],
+                chunk.column + e.valid_up_to()
+            );
+            let (id, raw) = salvaged_id(salvage.id);
+            return record(chunk, id, raw, Err(format_error(line_field(), message)));
+        }
+    };
+    match parse_strict(text) {
+        Ok(Parsed { value, raw_id }) => {
+            let raw = raw_id.map(|r| r.get().to_string()).filter(|r| is_number(r));
+            let read = parse_case(value);
+            Record {
+                read,
+                line: chunk.line,
+                raw_id: raw,
+            }
+        }
+        Err(StrictError::Duplicate { field, message }) => {
+            let (id, raw) = salvaged_id(salvage(text).id);
+            record(chunk, id, raw, Err(format_error(field, message)))
+        }
+        Err(StrictError::Syntax(e)) => {
+            let found = salvage(text);
+            let (id, raw) = salvaged_id(found.id);
+            let error = match found.non_finite {
+                Some((field, value)) => GeomError::NonFinite {
+                    field,
+                    value: abbreviate(&value),
+                },
+                None => syntax_error(chunk, &e),
+            };
+            record(chunk, id, raw, Err(error))
+        }
+    }
+}
+
+fn record(
+    chunk: &Chunk,
+    id: serde_json::Value,
+    raw_id: Option<String>,
+    case: Result<Case, GeomError>,
+) -> Record {
+    Record {
+        read: ReadCase { id, case },
+        line: chunk.line,
+        raw_id,
+    }
+}
+
+fn format_error(field: String, message: String) -> GeomError {
+    GeomError::Format { field, message }
+}
+
+/// The id recovered from a broken case: its value, and its raw text if a number.
+fn salvaged_id(raw: Option<String>) -> (serde_json::Value, Option<String>) {
+    match raw {
+        Some(raw) if is_number(&raw) => {
+            let value = serde_json::from_str(&raw).unwrap_or(serde_json::Value::Null);
+            (value, Some(raw))
+        }
+        Some(raw) => (
+            serde_json::from_str(&raw).unwrap_or(serde_json::Value::Null),
+            None,
+        ),
+        None => (serde_json::Value::Null, None),
+    }
+}
+
+/// Whether a raw JSON value is a number literal that serde_json accepts.
+fn is_number(raw: &str) -> bool {
+    raw.starts_with(|c: char| c == '-' || c.is_ascii_digit())
+        && serde_json::from_str::<serde_json::Number>(raw).is_ok()
+}
+
+/// A syntax error, at its line of the input (`field: "line N"`) and column.
+fn syntax_error(chunk: &Chunk, e: &serde_json::Error) -> GeomError {
+    let text = e.to_string();
+    let suffix = format!(" at line {} column {}", e.line(), e.column());
+    let message = text.strip_suffix(&suffix).unwrap_or(&text);
+    // serde_json counts a line break as the start of the next line (column 0).
+    let (l, c) = (e.line().max(1), e.column());
+    let (line, at) = match (l, c) {
+        (l, 0) if l > 1 => (chunk.line + l - 2, "at the end of the line".to_string()),
+        (1, c) => (
+            chunk.line,
+            format!("column {}", chunk.column + c.max(1) - 1),
+        ),
+        (l, c) => (chunk.line + l - 1, format!("column {c}")),
+    };
+    format_error(format!("line {line}"), format!("{message} ({at})"))
 }
 
 #[cfg(test)]

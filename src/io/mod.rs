@@ -1,20 +1,23 @@
-//! The JSON case format of the command line (spec/CASES.md): reading cases, turning
+//! The JSON case format of the command line (docs/FORMAT.md): reading cases, turning
 //! them into geometric objects, and writing results as JSON Lines.
 
 mod answer_out;
 mod build;
 pub mod case;
 mod de;
+pub mod lenient;
 pub mod number;
 pub mod objects;
 pub mod result;
 pub mod shapes;
 mod solve;
+pub mod stream;
+pub mod strict;
 mod verify;
 
 pub use answer_out::result as answer_result;
 pub use build::{position, shape};
-pub use case::{read_cases, Case, Op, Options, ReadCase};
+pub use case::{read_cases, read_chunk, read_stream, Case, Op, Options, ReadCase, Record};
 pub use number::{Double, Num};
 pub use objects::ObjectSpec;
 pub use result::CaseResult;

@@ -1,4 +1,4 @@
-//! Numbers in the case format (spec/CASES.md "Numbers").
+//! Numbers in the case format (docs/FORMAT.md "Numbers").
 //!
 //! A JSON number is parsed correctly rounded (serde_json's `float_roundtrip`) and is
 //! then an exact double. Linear objects also accept a string: `"p/q"` or a decimal
@@ -87,6 +87,72 @@ impl<'de> Deserialize<'de> for Double {
     }
 }
 
+/// A double in the shortest form that reads back to the same bits, with an exponent
+/// when that is shorter (`1e300`, not the 301 digits of Rust's `{}`), as in results.
+pub fn shortest(x: f64) -> String {
+    serde_json::Number::from_f64(x).map_or_else(|| format!("{x}"), |n| n.to_string())
+}
+
+/// Digits beyond which a plain decimal in a message is rewritten by [`tidy_numbers`].
+const LONG_DECIMAL: usize = 24;
+
+/// Rewrite the long plain decimals of a message (`{}` of 1e300 has 301 digits) in
+/// shortest form ([`shortest`]). Rust prints a double's shortest round-trip digits
+/// padded with zeros, so parsing them back gives the same double: nothing is lost.
+/// Text inside double quotes is the user's own and is left alone.
+pub fn tidy_numbers(message: &str) -> std::borrow::Cow<'_, str> {
+    let b = message.as_bytes();
+    let long = |i: usize| {
+        b[i..]
+            .iter()
+            .take_while(|c| c.is_ascii_digit() || **c == b'.')
+            .count()
+            > LONG_DECIMAL
+    };
+    if !(0..b.len()).any(|i| b[i].is_ascii_digit() && long(i)) {
+        return message.into();
+    }
+    let mut out = String::with_capacity(message.len());
+    let (mut i, mut quoted, mut done) = (0, false, 0);
+    while i < b.len() {
+        let starts_number = !quoted
+            && b[i].is_ascii_digit()
+            && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'.'));
+        if starts_number && long(i) {
+            let negative = i > 0 && b[i - 1] == b'-';
+            let start = if negative { i - 1 } else { i };
+            let len = b[i..]
+                .iter()
+                .take_while(|c| c.is_ascii_digit() || **c == b'.')
+                .count();
+            let token = &message[start..i + len];
+            if let Ok(v) = token.trim_end_matches('.').parse::<f64>() {
+                out.push_str(&message[done..start]);
+                out.push_str(&shortest(v));
+                done = i + len;
+            }
+            i += len;
+            continue;
+        }
+        if b[i] == b'"' && (i == 0 || b[i - 1] != b'\\') {
+            quoted = !quoted;
+        }
+        i += 1;
+    }
+    out.push_str(&message[done..]);
+    out.into()
+}
+
+/// A number as the user wrote it, cut short when it is very long (for messages).
+pub fn abbreviate(text: &str) -> String {
+    let n = text.chars().count();
+    if n <= 40 {
+        return text.to_string();
+    }
+    let head: String = text.chars().take(20).collect();
+    format!("{head}… ({n} characters)")
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -104,6 +170,43 @@ mod tests {
         let x = 0.1f64 + 0.2;
         let back: Num = serde_json::from_str(&serde_json::to_string(&x).unwrap()).unwrap();
         assert_eq!(back.as_double().map(f64::to_bits), Some(x.to_bits()));
+    }
+
+    #[test]
+    fn long_decimals_in_messages_are_shortened() {
+        let huge = format!("{}", 1e300);
+        let tiny = format!("{}", -1.5e-300);
+        assert!(huge.len() > 300 && tiny.len() > 300);
+        let m = format!("objects[0].range: the interval [{huge}, {tiny}] is empty");
+        // The form of the results (serde_json's: `1e+300`).
+        let (h, t) = (shortest(1e300), shortest(-1.5e-300));
+        assert!(h.len() <= 6 && t.len() <= 9, "{h} {t}");
+        assert_eq!(
+            tidy_numbers(&m),
+            format!("objects[0].range: the interval [{h}, {t}] is empty")
+        );
+        let m = format!("invalid type: floating point `{huge}.0`, expected u32");
+        assert_eq!(
+            tidy_numbers(&m),
+            format!("invalid type: floating point `{h}`, expected u32")
+        );
+        // Short numbers, field indices and quoted user text stay as they are.
+        let kept = format!("objects[12].d: \"{huge}/0\" is not a number, 0.5 and 123");
+        assert_eq!(tidy_numbers(&kept), kept);
+        for x in [
+            1e300,
+            -2.5e-300,
+            0.1 + 0.2,
+            123456789.0,
+            f64::MAX,
+            f64::MIN_POSITIVE,
+        ] {
+            assert_eq!(shortest(x).parse::<f64>().unwrap(), x);
+            assert_eq!(tidy_numbers(&format!("{x}")).parse::<f64>().unwrap(), x);
+            assert!(tidy_numbers(&format!("{x}")).len() <= 24);
+        }
+        assert_eq!(abbreviate("1e309"), "1e309");
+        assert!(abbreviate(&"9".repeat(400)).len() < 50);
     }
 
     #[test]

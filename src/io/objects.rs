@@ -1,4 +1,4 @@
-//! Objects of the case format (spec/CASES.md "Objects"), as written. Validation into
+//! Objects of the case format (docs/FORMAT.md "Objects"), as written. Validation into
 //! geometric objects (zero directions, collinear plane vectors, ...) happens when a
 //! case is solved, with the field path prefixed by the object's position.
 

@@ -1,4 +1,4 @@
-//! Results of the case format (spec/CASES.md "Results"), written as JSON Lines.
+//! Results of the case format (docs/FORMAT.md "Results"), written as JSON Lines.
 //!
 //! Doubles are printed in the shortest form that reads back to the same bits
 //! (serde_json uses ryu). A value that has no finite double (an exact coordinate
@@ -107,6 +107,9 @@ pub struct CurveVertexOut {
 pub struct CurveOut {
     pub closed: bool,
     pub points: Vec<CurveVertexOut>,
+    /// The singular points the curve ends at (copies of entries of the result's
+    /// `singular_points`, which `ends[].index` refers to).
+    pub singular_points: Vec<SingularPointOut>,
     /// How the first and the last point end the curve.
     pub ends: [CurveEndOut; 2],
     /// `verified` (a proven chain of single-arc boxes covers it) or `undecided`.
@@ -187,7 +190,7 @@ pub struct CaseResult {
     pub missed: Option<Vec<PointOut>>,
 }
 
-/// The verdict of `verify` on one claimed item (CASES.md "Claims").
+/// The verdict of `verify` on one claimed item (docs/FORMAT.md "Claims").
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ClaimOut {
     /// `kind`, or `points[i]` of the claim.

@@ -1,4 +1,4 @@
-//! Solving one case of the command line (CASES.md "Cases"): translate its objects and
+//! Solving one case of the command line (docs/FORMAT.md "Cases"): translate its objects and
 //! options into the front door's types ([`crate::ops`]), call the operation, and write
 //! the answer as a result record.
 

@@ -1,5 +1,5 @@
-//! `geocert verify`: certify or refute another program's answer (CASES.md "Claims";
-//! CERTIFICATION.md "Verifying someone else's answer").
+//! `geocert verify`: certify or refute another program's answer (docs/FORMAT.md
+//! "Claims"; docs/CERTIFICATES.md "Verifying another program's answer").
 //!
 //! The case is solved exactly (`options.exact`, so every reported point carries its
 //! exact rationals), and each claimed item is compared with the truth in exact
@@ -9,7 +9,9 @@
 //! the exact input is known. `missed` lists the true solutions no claimed point is
 //! within the tolerance of. A claimed `kind` (`empty`, `inside`, ...) is compared
 //! with the true kind. Answers that are not finite point sets (a line, a segment, a
-//! plane) make point claims `undecided` with the reason.
+//! plane) make point claims `undecided` with the reason, and so do true points known
+//! only by their certified boxes (numerically certified answers carry no exact values):
+//! they are neither matched nor listed as `missed`.
 //!
 //! A claim is another program's output, so fields of the result format that do not
 //! take part in the comparison (`box`, `multiplicity`, `status`, ...) are accepted and
@@ -293,8 +295,14 @@ fn compare(
             continue;
         }
         let mut best: Option<Rational> = None;
+        // A true point without exact values (a numerically certified answer) cannot be
+        // compared here, so no claimed point can be refuted against it.
+        let mut incomparable = false;
         for (j, t) in true_points.iter().enumerate() {
-            let Some(d2) = distance2(c, t)? else { continue };
+            let Some(d2) = distance2(c, t)? else {
+                incomparable = true;
+                continue;
+            };
             if d2 <= tol2 {
                 matched[j] = true;
             }
@@ -303,8 +311,8 @@ fn compare(
             }
         }
         let confirmed = best.as_ref().is_some_and(|b| *b <= tol2);
-        // A refutation needs every solution known: a complete, decided answer.
-        let provable = truth.complete == Some(true) && status != "undecided";
+        // A refutation needs every solution known exactly: a complete, decided answer.
+        let provable = truth.complete == Some(true) && status != "undecided" && !incomparable;
         claims.push(ClaimOut {
             item,
             verdict: match (confirmed, provable) {
@@ -315,17 +323,21 @@ fn compare(
             status,
             distance: best.as_ref().map(|b| sqrt_rational(b).nearest),
             reason: (!confirmed).then(|| match &best {
+                _ if incomparable => "the answer is certified numerically (boxes, not exact \
+                                      values); comparing a claim with it is not implemented"
+                    .to_string(),
                 Some(_) => "no solution lies within the tolerance".to_string(),
                 None => format!("the answer has no point here (`{kind}`)"),
             }),
         });
     }
-    // Classification answers report the nearest shell point, not a solution set.
+    // Classification answers report the nearest shell point, not a solution set; a true
+    // point without exact values cannot be shown to be missed.
     let missed = if kind == "points" {
         true_points
             .iter()
             .zip(&matched)
-            .filter(|(_, m)| !**m)
+            .filter(|(p, m)| !**m && p.exact.is_some())
             .map(|(p, _)| p.clone())
             .collect()
     } else {

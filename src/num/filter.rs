@@ -1,4 +1,4 @@
-//! The filter tier of the linear kernel (CERTIFICATION.md "Escalation", first stage):
+//! The filter tier of the linear kernel (docs/CERTIFICATES.md "Escalation", first stage):
 //! a formula is evaluated in double-double ([`Dd`]) and its absolute error is bounded by
 //! a static constant `ε` (derived with [`crate::num::error_bound::ErrorBound`]) times the
 //! scale `M = Π m_g^{d_g}` of its inputs, where `m_g` is the largest magnitude in input

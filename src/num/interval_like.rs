@@ -1,4 +1,4 @@
-//! What generic certification code (Krawczyk, subdivision, escalation — CERTIFICATION.md)
+//! What generic certification code (Krawczyk, subdivision, escalation — docs/CERTIFICATES.md)
 //! needs from an interval type, on top of [`Real`]: implemented by
 //! [`crate::num::Interval`] and [`crate::num::MpfrInterval`], so that the certifier is
 //! written once and runs at f64 precision and at any MPFR precision.

@@ -20,6 +20,7 @@ pub mod parse;
 pub mod ratio;
 pub mod real;
 pub mod ring;
+pub mod rng;
 pub mod round;
 pub mod vector;
 

@@ -1,4 +1,4 @@
-//! Exact numbers from text and from doubles (CASES.md "Numbers": a string `"p/q"` or a
+//! Exact numbers from text and from doubles (docs/FORMAT.md "Numbers": a string `"p/q"` or a
 //! decimal string is accepted wherever a linear object takes a number, and is exact).
 //!
 //! Accepted forms: an integer fraction `[+-]digits/digits` (non-zero denominator), or a

@@ -85,6 +85,34 @@ pub trait Real: Arith + Debug + PartialEq + 'static {
     /// interval parameter to one piece of a piecewise formula. Enclosures: the
     /// intersection, possibly empty. `f64`: `self` clamped into `[lo, hi]`.
     fn restrict_to(&self, lo: f64, hi: f64) -> Self;
+
+    /// `true` for `f64` only: plain floating point, which proves nothing, so a formula
+    /// may reuse an f64 value it computed once (the cached axes of
+    /// `curve::frame::Frame::axes`) where every other type evaluates the formula to
+    /// enclose the exact value.
+    const IS_F64: bool = false;
+
+    /// Hook of the fast paths written for f64 intervals (`surface::taylor_fast`), the
+    /// way in: `[lo, hi]` when this number is an f64 interval — [`crate::num::Interval`]
+    /// itself, or a wrapper that adds bookkeeping to one (the certifier's
+    /// `Guarded<Interval>`) — as [`crate::num::Interval::lo`] and `hi` give them
+    /// (`[+∞, −∞]` for the empty set). `None` (the default) for every other type, which
+    /// then takes the generic path.
+    fn as_f64_interval(&self) -> Option<[f64; 2]> {
+        None
+    }
+
+    /// The same hook, the way out: the number of this type whose value is the f64
+    /// interval `[lo, hi]` (`lo > hi`: empty), which a fast path computed from `args`
+    /// (each [`Real::as_f64_interval`]) by a function that is `C^∞` on a neighbourhood
+    /// of their box (a polynomial, or a quotient whose denominator it proved nonzero).
+    /// A wrapper keeps its bookkeeping: `Guarded` is smooth exactly when every argument
+    /// is and the value is not empty. `Some` exactly for the types whose
+    /// [`Real::as_f64_interval`] is `Some`; the bounds are taken as they are (no rounding).
+    fn from_f64_interval(bounds: [f64; 2], args: &[&Self]) -> Option<Self> {
+        let _ = (bounds, args);
+        None
+    }
 }
 
 impl Arith for f64 {
@@ -94,6 +122,7 @@ impl Arith for f64 {
 }
 
 impl Real for f64 {
+    const IS_F64: bool = true;
     fn pi_like(&self) -> Self {
         std::f64::consts::PI
     }

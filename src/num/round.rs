@@ -1,5 +1,5 @@
-//! Correctly rounded doubles with a proven enclosure (CERTIFICATION.md level `exact`:
-//! "coordinates are the exact values correctly rounded to the nearest double").
+//! Correctly rounded doubles with a proven enclosure (docs/CERTIFICATES.md level `exact`:
+//! the reported coordinates are the exact values correctly rounded to the nearest double).
 //!
 //! Accuracy policy: `nearest` is the exact value rounded to nearest, ties to even, with
 //! IEEE-754 binary64 subnormals and overflow (a value at or beyond

@@ -161,6 +161,8 @@ pub struct CurvesAnswer {
 
 /// The answer of an operation.
 #[derive(Debug, Clone, PartialEq)]
+// One answer per operation call: its size does not matter, boxing would only add noise.
+#[allow(clippy::large_enum_variant)]
 pub enum Answer {
     /// No solution (the certificate's `reason` may say why: `parallel`, ...).
     Empty,

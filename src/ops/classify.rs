@@ -2,7 +2,7 @@
 //!
 //! The float method of §4 (the normal at the nearest point, with the tolerance δ and a
 //! fallback for non-convex edges) is replaced by exact decisions on the exact input
-//! (CERTIFICATION.md: "a point one ulp off a face is `outside` or `inside`, not `on`"):
+//! (docs/CERTIFICATES.md: a point one ulp off a face is `outside` or `inside`, not `on`):
 //!
 //! * `on`: the point lies on a face — exactly on its plane and inside or on the
 //!   boundary of its polygon;
@@ -31,7 +31,7 @@ pub enum Side {
 }
 
 impl Side {
-    /// The `kind` of a result (CASES.md).
+    /// The `kind` of a result (docs/FORMAT.md).
     pub fn as_str(self) -> &'static str {
         match self {
             Side::Inside => "inside",

@@ -2,11 +2,11 @@
 //! §4, with the implicit forms of §1.4/§1.6), decided exactly.
 //!
 //! The side is the sign of the implicit function `F` (§1.4: `F > 0` outside), and for
-//! double inputs `F(p)` is a rational number: the CASES.md frame is built from the
+//! double inputs `F(p)` is a rational number: the docs/FORMAT.md frame is built from the
 //! unnormalised axis `Z'` and `X' = e − (e·Z')Z'/|Z'|²` (or `ref` in place of `e`),
 //! `Y' = Z' × X'`, and every normalisation enters `F` squared, as `(w·X')²/|X'|²`. So
 //! the sign of `F(p)` is decided exactly in `rug::Rational` — a point one ulp off the
-//! sphere is `inside` or `outside`, never `on` (CERTIFICATION.md).
+//! sphere is `inside` or `outside`, never `on` (docs/CERTIFICATES.md).
 //!
 //! For a torus with `r ≥ R` (self-intersecting), `inside` is the region `F < 0` of the
 //! quartic `(|w|² + R² − r²)² − 4R²(|w|² − (w·Z)²)`.
@@ -28,7 +28,7 @@ fn qv(v: &[f64; 3]) -> V3<Rational> {
     v.map(q)
 }
 
-/// The unnormalised X axis of the CASES.md frame: `ref` (or the coordinate vector least
+/// The unnormalised X axis of the docs/FORMAT.md frame: `ref` (or the coordinate vector least
 /// aligned with `Z`, first on ties) minus its component along `Z`, exactly.
 pub fn frame_x_unnormalised(axis: &[f64; 3], reference: Option<&[f64; 3]>) -> V3<Rational> {
     let z = qv(axis);

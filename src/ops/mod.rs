@@ -3,7 +3,7 @@
 //!
 //! # The front door
 //!
-//! [`intersect`], [`project`] and [`classify`] take typed [`Shape`]s and return a
+//! [`intersect()`], [`project()`] and [`classify()`] take typed [`Shape`]s and return a
 //! [`crate::Certified`] [`Answer`]; they choose the ladder (linear kernel → exact
 //! algebraic → numeric certified) and seed the solvers. The command line's JSON
 //! reader only translates into these types and back.

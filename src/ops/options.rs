@@ -28,9 +28,9 @@ impl Default for Options {
         Options {
             precision: Precision::default(),
             max_boxes: 20_000,
-            // 512, not CERTIFICATION.md's 4096: a tangency escalates to the cap before
-            // its singular certificate, and at 4096 bits that costs ~100× more
-            // (measured).
+            // 512, not the specification's 4096 (docs/CERTIFICATES.md "Escalation"): a
+            // tangency escalates to the cap before its singular certificate, and at 4096
+            // bits that costs ~100× more (measured).
             max_bits: 512,
             exact: false,
             chord_tolerance: None,

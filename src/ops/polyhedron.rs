@@ -1,4 +1,4 @@
-//! Closed polyhedral shells (CASES.md `polyhedron`; OPERATIONS.md §4): vertices and
+//! Closed polyhedral shells (docs/FORMAT.md `polyhedron`; OPERATIONS.md §4): vertices and
 //! planar faces given as index lists, counter-clockwise seen from outside.
 //!
 //! Validation is exact (every double is an exact rational): each face has at least

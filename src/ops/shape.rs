@@ -1,7 +1,7 @@
 //! The shapes every operation of the front door takes ([`Shape`]), and the query
 //! points of projections and classification ([`Position`]).
 //!
-//! One type per concept: a sphere is a [`crate::surface::Sphere`] inside
+//! One type per concept: a sphere is a [`crate::surface::quadrics::Sphere`] inside
 //! [`Shape::Surface`]; its implicit form, exact quadric form and closed-shell view are
 //! conversions of it ([`crate::surface::AnySurface::implicit`],
 //! [`crate::ops::algebraic::QuadricForm::of_surface`], [`crate::ops::closed_surface`]).
@@ -31,6 +31,8 @@ pub enum LinearObject<T: Coord> {
 
 /// A linear object with its numbers as given: all doubles, or exact rationals.
 #[derive(Debug, Clone, PartialEq)]
+// Shapes are built once per call: their size does not matter.
+#[allow(clippy::large_enum_variant)]
 pub enum Linear {
     Double(LinearObject<f64>),
     Exact(LinearObject<Rational>),

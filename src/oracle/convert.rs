@@ -1,9 +1,10 @@
 //! Between the public types of [`super`] and the bridge's: input validation and
 //! packing, reading results, turning C++ exceptions into [`OracleError`].
 
-use super::ffi::bridge::{ExactOut, FloatOut, Kind, PlaneIn, Two2, Two3};
+use super::ffi::bridge::{ExactOut, FloatOut, Kind, Linear3, PlaneIn, Two2, Two3};
 use super::{
-    Intersection, Line2Input, LineInput, OracleError, PlaneInput, Segment2Input, SegmentInput,
+    Intersection, Line2Input, LineInput, Linear3Input, OracleError, PlaneInput, Segment2Input,
+    SegmentInput,
 };
 use crate::error::{require_finite, require_finite_all};
 use crate::GeomError;
@@ -103,6 +104,47 @@ pub(super) fn segment(s: &SegmentInput, field: &str) -> Result<Two3, GeomError> 
     })
 }
 
+/// A line ∩ line argument: finite point and direction, range ends not NaN, `lo`
+/// finite or `−∞`, `hi` finite or `+∞` (an inverted closed range is refused by the
+/// C++ side as a degenerate segment).
+#[inline(always)]
+pub(super) fn linear3(l: &Linear3Input, field: &str) -> Result<Linear3, GeomError> {
+    match *l {
+        Linear3Input::Segment(s) => {
+            let Two3 { a, b } = segment(&s, field)?;
+            Ok(Linear3 {
+                segment: true,
+                a,
+                b,
+                lo: 0.0,
+                hi: 1.0,
+            })
+        }
+        Linear3Input::Line {
+            point,
+            direction,
+            lo,
+            hi,
+        } => {
+            finite(field, "point", &point)?;
+            finite(field, "direction", &direction)?;
+            if !(lo.is_finite() || lo == f64::NEG_INFINITY) {
+                require_finite(&format!("{field}.lo"), lo)?;
+            }
+            if !(hi.is_finite() || hi == f64::INFINITY) {
+                require_finite(&format!("{field}.hi"), hi)?;
+            }
+            Ok(Linear3 {
+                segment: false,
+                a: point,
+                b: direction,
+                lo,
+                hi,
+            })
+        }
+    }
+}
+
 #[inline(always)]
 pub(super) fn line2(l: &Line2Input, field: &str) -> Result<Two2, GeomError> {
     finite(field, "point", &l.point)?;
@@ -156,6 +198,7 @@ fn value_count(kind: Kind, d: usize) -> Result<usize, OracleError> {
         Kind::Empty => Ok(0),
         Kind::Point => Ok(d),
         Kind::Line | Kind::Segment => Ok(2 * d),
+        Kind::Ray if d == 3 => Ok(6),
         Kind::Plane if d == 3 => Ok(4),
         _ => Err(OracleError::Bridge(format!(
             "the kind {kind:?} in dimension {d}"
@@ -191,6 +234,10 @@ fn assemble<T, const D: usize>(
         Kind::Segment => Intersection::Segment {
             source: take(&mut it)?,
             target: take(&mut it)?,
+        },
+        Kind::Ray => Intersection::Ray {
+            source: take(&mut it)?,
+            direction: take(&mut it)?,
         },
         _ => Intersection::Plane(take(&mut it)?),
     })
@@ -235,6 +282,10 @@ pub(super) fn float<const D: usize>(
             source: at(0),
             target: at(D),
         },
+        Kind::Ray if D == 3 => Intersection::Ray {
+            source: at(0),
+            direction: at(D),
+        },
         kind => {
             value_count(kind, D)?;
             Intersection::Plane([out.v[0], out.v[1], out.v[2], out.v[3]])
@@ -254,6 +305,7 @@ pub(super) fn only_point<T, const D: usize>(
                 Intersection::Empty => "empty set",
                 Intersection::Line { .. } => "line",
                 Intersection::Segment { .. } => "segment",
+                Intersection::Ray { .. } => "ray",
                 _ => "plane",
             }
         ))),

@@ -5,8 +5,8 @@
 use super::convert::{self, only_point};
 use super::ffi::bridge;
 use super::{
-    ExactResult, ExactResult2, Line2Input, LineInput, OracleError, PlaneInput, Segment2Input,
-    SegmentInput,
+    ExactResult, ExactResult2, Line2Input, LineInput, Linear3Input, OracleError, PlaneInput,
+    Segment2Input, SegmentInput,
 };
 use rug::Rational;
 
@@ -91,4 +91,12 @@ pub fn intersect_segment2_segment2(
 ) -> Result<ExactResult2, OracleError> {
     let (a, b) = (convert::segment2(a, "a")?, convert::segment2(b, "b")?);
     convert::exact(bridge::epeck_segments_2d(&a, &b))
+}
+
+/// Line ∩ line for any two of lines, rays, ranged lines and segments in space:
+/// `Empty`, `Point`, `Segment`, `Ray` or `Line` (CGAL's `intersection` of the
+/// `Line_3`/`Ray_3`/`Segment_3` pair, see [`Linear3Input`]).
+pub fn intersect_line_line(a: &Linear3Input, b: &Linear3Input) -> Result<ExactResult, OracleError> {
+    let (a, b) = (convert::linear3(a, "a")?, convert::linear3(b, "b")?);
+    convert::exact(bridge::epeck_line_line(&a, &b))
 }

@@ -5,8 +5,8 @@
 use super::convert::{self, only_point};
 use super::ffi::bridge;
 use super::{
-    EpeckToDouble, FloatResult, FloatResult2, Line2Input, LineInput, OracleError, PlaneInput,
-    Segment2Input, SegmentInput,
+    EpeckToDouble, FloatResult, FloatResult2, Line2Input, LineInput, Linear3Input, OracleError,
+    PlaneInput, Segment2Input, SegmentInput,
 };
 
 /// Line ∩ plane (OPERATIONS.md §5.1): `Empty`, `Point` or `Line`.
@@ -133,4 +133,15 @@ pub fn intersect_segment2_segment2(
         &a,
         &b,
     ))
+}
+
+/// Line ∩ line for lines, rays, ranged lines and segments: `Empty`, `Point`,
+/// `Segment`, `Ray` or `Line`.
+pub fn intersect_line_line(
+    to_double: EpeckToDouble,
+    a: &Linear3Input,
+    b: &Linear3Input,
+) -> Result<FloatResult, OracleError> {
+    let (a, b) = (convert::linear3(a, "a")?, convert::linear3(b, "b")?);
+    convert::float(bridge::epeck_line_line_f64(to_double.force_exact(), &a, &b))
 }

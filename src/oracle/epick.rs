@@ -7,8 +7,8 @@
 use super::convert::{self, only_point};
 use super::ffi::bridge;
 use super::{
-    FloatResult, FloatResult2, Line2Input, LineInput, OracleError, PlaneInput, Segment2Input,
-    SegmentInput,
+    FloatResult, FloatResult2, Line2Input, LineInput, Linear3Input, OracleError, PlaneInput,
+    Segment2Input, SegmentInput,
 };
 use crate::error::GeomError;
 
@@ -138,6 +138,34 @@ pub fn intersect_segment2_segment2(
     )?;
     let (a, b) = (convert::segment2(a, "a")?, convert::segment2(b, "b")?);
     convert::float(bridge::epick_segments_2d(&a, &b))
+}
+
+/// Line ∩ line for lines, rays, ranged lines and segments: `Empty`, `Point`,
+/// `Segment`, `Ray` or `Line`.
+pub fn intersect_line_line(a: &Linear3Input, b: &Linear3Input) -> Result<FloatResult, OracleError> {
+    window(
+        &[("a", &linear3_values(a)), ("b", &linear3_values(b))],
+        WINDOW_BITS_3D,
+    )?;
+    let (a, b) = (convert::linear3(a, "a")?, convert::linear3(b, "b")?);
+    convert::float(bridge::epick_line_line(&a, &b))
+}
+
+/// The numbers of a line ∩ line argument (open range ends are infinite, not numbers).
+fn linear3_values(l: &Linear3Input) -> Vec<f64> {
+    match l {
+        Linear3Input::Line {
+            point,
+            direction,
+            lo,
+            hi,
+        } => [*point, *direction]
+            .concat()
+            .into_iter()
+            .chain([*lo, *hi].into_iter().filter(|x| x.is_finite()))
+            .collect(),
+        Linear3Input::Segment(s) => [s.source, s.target].concat(),
+    }
 }
 
 /// The magnitude window Epick is asked within. Epick's double constructions (a plane's

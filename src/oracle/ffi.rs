@@ -9,7 +9,8 @@
 pub(crate) mod bridge {
     /// What the result is, which says how to read `v`:
     /// Empty: nothing; Point: x y [z]; Line: point then direction;
-    /// Segment: source then target; Plane: a b c d of a x + b y + c z + d = 0.
+    /// Segment: source then target; Plane: a b c d of a x + b y + c z + d = 0;
+    /// Ray: source then direction.
     #[derive(Debug)]
     enum Kind {
         Empty,
@@ -17,6 +18,7 @@ pub(crate) mod bridge {
         Line,
         Segment,
         Plane,
+        Ray,
     }
 
     /// Implicit: `v[0..4]` = a, b, c, d. Parametric: `v[0..3]` origin, `v[3..6]` u,
@@ -30,6 +32,17 @@ pub(crate) mod bridge {
     struct Two3 {
         a: [f64; 3],
         b: [f64; 3],
+    }
+
+    /// A line, ray or segment of line ∩ line. `segment`: from `a` to `b`. Otherwise the
+    /// line through `a` with direction `b`, restricted to `t ∈ [lo, hi]` (`lo = −∞`,
+    /// `hi = +∞` for open ends: both open a line, one open a ray, none a segment).
+    struct Linear3 {
+        segment: bool,
+        a: [f64; 3],
+        b: [f64; 3],
+        lo: f64,
+        hi: f64,
     }
 
     /// As [`Two3`], in the plane.
@@ -61,6 +74,7 @@ pub(crate) mod bridge {
         fn epeck_project_point_plane(point: &[f64; 3], plane: &PlaneIn) -> Result<ExactOut>;
         fn epeck_lines_2d(a: &Two2, b: &Two2) -> Result<ExactOut>;
         fn epeck_segments_2d(a: &Two2, b: &Two2) -> Result<ExactOut>;
+        fn epeck_line_line(a: &Linear3, b: &Linear3) -> Result<ExactOut>;
 
         fn epeck_line_plane_f64(
             force_exact: bool,
@@ -91,6 +105,7 @@ pub(crate) mod bridge {
         ) -> Result<FloatOut>;
         fn epeck_lines_2d_f64(force_exact: bool, a: &Two2, b: &Two2) -> Result<FloatOut>;
         fn epeck_segments_2d_f64(force_exact: bool, a: &Two2, b: &Two2) -> Result<FloatOut>;
+        fn epeck_line_line_f64(force_exact: bool, a: &Linear3, b: &Linear3) -> Result<FloatOut>;
 
         fn epick_line_plane(line: &Two3, plane: &PlaneIn) -> Result<FloatOut>;
         fn epick_segment_plane(segment: &Two3, plane: &PlaneIn) -> Result<FloatOut>;
@@ -100,5 +115,6 @@ pub(crate) mod bridge {
         fn epick_project_point_plane(point: &[f64; 3], plane: &PlaneIn) -> Result<FloatOut>;
         fn epick_lines_2d(a: &Two2, b: &Two2) -> Result<FloatOut>;
         fn epick_segments_2d(a: &Two2, b: &Two2) -> Result<FloatOut>;
+        fn epick_line_line(a: &Linear3, b: &Linear3) -> Result<FloatOut>;
     }
 }

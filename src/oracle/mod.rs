@@ -14,7 +14,8 @@
 //! The operations (OPERATIONS.md §3.1, §3.3, §5.1, §6.1, §6.2, §7.1, §8):
 //! `intersect_line_plane`, `intersect_segment_plane`, `intersect_plane_plane`,
 //! `intersect_three_planes`, `project_point_line`, `project_point_plane`,
-//! `intersect_line2_line2`, `intersect_segment2_segment2`.
+//! `intersect_line2_line2`, `intersect_segment2_segment2`; and `intersect_line_line`
+//! for any two of lines, rays, ranged lines and segments in space ([`Linear3Input`]).
 //!
 //! Inputs are doubles, taken exactly by Epeck. A non-finite input is refused in Rust
 //! ([`GeomError::NonFinite`] naming the component, e.g. `plane.origin[1]`). A
@@ -67,6 +68,21 @@ pub struct SegmentInput {
     pub target: [f64; 3],
 }
 
+/// An argument of line ∩ line: the line `point + t·direction` restricted to
+/// `t ∈ [lo, hi]` (`lo = −∞` and `hi = +∞` for open ends: both open is CGAL's `Line_3`,
+/// one open a `Ray_3` from the finite end, none a `Segment_3` between the ends — end
+/// points constructed in the kernel's arithmetic, exactly in Epeck), or a segment.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Linear3Input {
+    Line {
+        point: [f64; 3],
+        direction: [f64; 3],
+        lo: f64,
+        hi: f64,
+    },
+    Segment(SegmentInput),
+}
+
 /// The 2D line `point + t·direction`.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Line2Input {
@@ -94,6 +110,7 @@ pub struct Segment2Input {
 /// | three planes | `Empty`, `Point`, `Line`, `Plane` |
 /// | 2D line ∩ line | `Empty` (parallel), `Point`, `Line` (equal) |
 /// | 2D segment ∩ segment | `Empty`, `Point`, `Segment` (collinear overlap) |
+/// | line/ray/segment ∩ line/ray/segment | `Empty`, `Point`, `Segment`, `Ray`, `Line` (collinear overlap) |
 ///
 /// Lines and planes are CGAL's representatives, not unique: compare them as sets.
 #[derive(Debug, Clone, PartialEq)]
@@ -107,6 +124,9 @@ pub enum Intersection<T, const D: usize> {
     Line { point: [T; D], direction: [T; D] },
     /// A segment, as CGAL orients it.
     Segment { source: [T; D], target: [T; D] },
+    /// A ray (3D only): CGAL's `source()` and `to_vector()` (a non-zero direction of
+    /// arbitrary length).
+    Ray { source: [T; D], direction: [T; D] },
     /// A whole plane (3D only): the coefficients `[a, b, c, d]` of
     /// `a x + b y + c z + d = 0` (CGAL returns one of the input planes).
     Plane([T; 4]),

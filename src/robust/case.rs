@@ -1,7 +1,7 @@
-//! The cases of the robustness generators: plain doubles, as a CASES.md case would
+//! The cases of the robustness generators: plain doubles, as a docs/FORMAT.md case would
 //! give them, with the conversions every consumer needs — geocert's objects (doubles,
 //! or the same values as exact rationals), the CGAL oracle's inputs (feature `cgal`)
-//! and one JSON line of spec/CASES.md that `geocert solve -` replays.
+//! and one JSON line of docs/FORMAT.md that `geocert solve -` replays.
 
 use nalgebra::{Vector2, Vector3};
 use rug::Rational;
@@ -13,7 +13,7 @@ use crate::GeomError;
 pub type P3 = [f64; 3];
 pub type P2 = [f64; 2];
 
-/// A plane: `origin + s·u + t·v`, or `normal·x + d = 0` (CASES.md `plane`).
+/// A plane: `origin + s·u + t·v`, or `normal·x + d = 0` (docs/FORMAT.md `plane`).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum PlaneIn {
     Parametric { origin: P3, u: P3, v: P3 },
@@ -171,7 +171,7 @@ impl Case {
         }
     }
 
-    /// The case as one JSON line of spec/CASES.md (numbers in shortest round-trip
+    /// The case as one JSON line of docs/FORMAT.md (numbers in shortest round-trip
     /// form, so they read back to the same doubles).
     pub fn json_line(&self, id: &str) -> String {
         let intersect =

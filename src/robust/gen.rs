@@ -11,7 +11,7 @@
 //! kept), which preserves every incidence exactly.
 
 use super::case::{Case, Linear2In, LinearIn, PlaneIn, P2, P3};
-use super::rng::Rng;
+use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
 
 /// The constructions of OPERATIONS.md §3.1, §3.3, §5.1, §6.1–6.2, §7.1, §8.
@@ -295,166 +295,191 @@ fn degenerate(c: Construction, rng: &mut Rng) -> Case {
 }
 
 fn degenerate_unscaled(c: Construction, rng: &mut Rng) -> Case {
+    // (both frames drawn first whatever the construction: the streams stay as they were)
     let (f, g) = (Frame::new(rng), Frame::new(rng));
     match c {
-        Construction::ThreePlanes => Case::ThreePlanes(match rng.below(6) {
-            // a pencil: three planes through one line
-            0 => {
-                let w = g.u;
-                let mk = |rng: &mut Rng| Frame {
-                    o: add(f.o, mul(rng.small_int(), w)),
-                    u: mul(nonzero(rng), w),
-                    v: p3(Rng::dyadic, rng),
-                };
-                let (a, b, c) = (mk(rng), mk(rng), mk(rng));
-                [a.plane(rng), b.plane(rng), c.plane(rng)]
-            }
-            // the same plane three times, written differently
-            1 => [f.plane(rng), f.plane(rng), f.plane(rng)],
-            // two coincident planes and a third crossing them
-            2 => [f.plane(rng), g.plane(rng), f.plane(rng)],
-            // two parallel planes and a third
-            3 => [f.plane(rng), f.shifted(rng).plane(rng), g.plane(rng)],
-            // a prism: three planes sharing a direction, no common line
-            4 => {
-                let w = g.u;
-                let mk = |rng: &mut Rng| Frame {
-                    o: p3(Rng::dyadic, rng),
-                    u: w,
-                    v: p3(Rng::dyadic, rng),
-                };
-                let (a, b, c) = (mk(rng), mk(rng), mk(rng));
-                [a.plane(rng), b.plane(rng), c.plane(rng)]
-            }
-            // the third plane an integer combination of the first two (implicit)
-            _ => {
-                let (na, nb) = (f.n(), g.n());
-                let (ha, hb) = (dot(na, f.o), dot(nb, g.o));
-                let (a, b) = (rng.small_int(), nonzero(rng));
-                let n = add(mul(a, na), mul(b, nb));
-                [
-                    f.plane(rng),
-                    g.plane(rng),
-                    PlaneIn::Implicit {
-                        normal: n,
-                        d: -(a * ha + b * hb),
-                    },
-                ]
-            }
-        }),
-        Construction::LinePlane => {
-            let plane = f.plane(rng);
-            let line = match rng.below(5) {
-                // a line in the plane
-                0 => LinearIn::Line {
-                    origin: f.point(rng),
-                    dir: f.along(rng),
-                },
-                // a line parallel to the plane (off it, unless the offset is in it)
-                1 => LinearIn::Line {
-                    origin: add(f.point(rng), p3(Rng::dyadic, rng)),
-                    dir: f.along(rng),
-                },
-                // a segment in the plane
-                2 => LinearIn::Segment {
-                    a: f.point(rng),
-                    b: f.point(rng),
-                },
-                // a segment touching the plane at an end point
-                3 => {
-                    let (a, b) = (f.point(rng), p3(Rng::dyadic, rng));
-                    if rng.coin() {
-                        LinearIn::Segment { a, b }
-                    } else {
-                        LinearIn::Segment { a: b, b: a }
-                    }
-                }
-                // a segment parallel to the plane
-                _ => {
-                    let a = add(f.point(rng), p3(Rng::dyadic, rng));
-                    LinearIn::Segment {
-                        a,
-                        b: add(a, f.along(rng)),
-                    }
-                }
+        Construction::ThreePlanes => Case::ThreePlanes(degenerate_three_planes(&f, &g, rng)),
+        Construction::LinePlane => degenerate_line_plane(&f, rng),
+        Construction::PlanePlane => degenerate_plane_plane(&f, &g, rng),
+        Construction::ProjectLine => degenerate_project_line(&f, rng),
+        Construction::ProjectPlane => degenerate_project_plane(&f, rng),
+        Construction::Lines2 => degenerate_lines2(rng),
+        Construction::Segments2 => degenerate_segments2(rng),
+    }
+}
+
+/// Three planes: a pencil, one plane thrice, two coincident and a third, two
+/// parallel and a third, a prism, or an integer combination.
+fn degenerate_three_planes(f: &Frame, g: &Frame, rng: &mut Rng) -> [PlaneIn; 3] {
+    match rng.below(6) {
+        // a pencil: three planes through one line
+        0 => {
+            let w = g.u;
+            let mk = |rng: &mut Rng| Frame {
+                o: add(f.o, mul(rng.small_int(), w)),
+                u: mul(nonzero(rng), w),
+                v: p3(Rng::dyadic, rng),
             };
-            Case::LinePlane(line, plane)
+            let (a, b, c) = (mk(rng), mk(rng), mk(rng));
+            [a.plane(rng), b.plane(rng), c.plane(rng)]
         }
-        Construction::PlanePlane => {
-            let other = match rng.below(3) {
-                0 => f.plane(rng),
-                1 => f.shifted(rng).plane(rng),
-                // parallel through a point of g
-                _ => Frame { o: g.o, ..f }.plane(rng),
+        // the same plane three times, written differently
+        1 => [f.plane(rng), f.plane(rng), f.plane(rng)],
+        // two coincident planes and a third crossing them
+        2 => [f.plane(rng), g.plane(rng), f.plane(rng)],
+        // two parallel planes and a third
+        3 => [f.plane(rng), f.shifted(rng).plane(rng), g.plane(rng)],
+        // a prism: three planes sharing a direction, no common line
+        4 => {
+            let w = g.u;
+            let mk = |rng: &mut Rng| Frame {
+                o: p3(Rng::dyadic, rng),
+                u: w,
+                v: p3(Rng::dyadic, rng),
             };
-            Case::PlanePlane(f.plane(rng), other)
+            let (a, b, c) = (mk(rng), mk(rng), mk(rng));
+            [a.plane(rng), b.plane(rng), c.plane(rng)]
         }
-        Construction::ProjectLine => {
-            let (o, d) = (f.o, f.u);
-            let on = add(o, mul(rng.dyadic(), d));
-            let point = match rng.below(2) {
-                // on the line
-                0 => on,
-                // off it along a perpendicular: the foot is `on`, exactly
-                _ => add(on, mul(rng.small_int(), cross(d, f.v))),
-            };
-            Case::ProjectLine(point, o, d)
-        }
-        Construction::ProjectPlane => {
-            let on = f.point(rng);
-            let point = match rng.below(2) {
-                0 => on,
-                _ => add(on, mul(rng.small_int(), f.n())),
-            };
-            Case::ProjectPlane(point, f.plane(rng))
-        }
-        Construction::Lines2 => {
-            let (o, d) = (p2(Rng::dyadic, rng), p2(Rng::dyadic, rng));
-            let o2 = match rng.below(2) {
-                // the same line through another point
-                0 => add2(o, mul2(rng.dyadic(), d)),
-                // a parallel line (or the same, if the offset happens to be along d)
-                _ => add2(o, p2(Rng::dyadic, rng)),
-            };
-            Case::Linear2(
-                Linear2In::Line { origin: o, dir: d },
-                Linear2In::Line {
-                    origin: o2,
-                    dir: mul2(nonzero(rng), d),
+        // the third plane an integer combination of the first two (implicit)
+        _ => {
+            let (na, nb) = (f.n(), g.n());
+            let (ha, hb) = (dot(na, f.o), dot(nb, g.o));
+            let (a, b) = (rng.small_int(), nonzero(rng));
+            let n = add(mul(a, na), mul(b, nb));
+            [
+                f.plane(rng),
+                g.plane(rng),
+                PlaneIn::Implicit {
+                    normal: n,
+                    d: -(a * ha + b * hb),
                 },
-            )
-        }
-        Construction::Segments2 => {
-            let (o, d) = (p2(Rng::dyadic, rng), p2(Rng::dyadic, rng));
-            let at = |k: i64| add2(o, mul2(k as f64 / 2.0, d));
-            let k: [i64; 4] = [(); 4].map(|_| rng.int(-4, 4));
-            let a = Linear2In::Segment {
-                a: at(k[0]),
-                b: at(k[1]),
-            };
-            let b = match rng.below(3) {
-                // collinear: overlapping, touching or disjoint
-                0 => Linear2In::Segment {
-                    a: at(k[2]),
-                    b: at(k[3]),
-                },
-                // an end point on the other segment (a T or an end-to-end touch)
-                1 => Linear2In::Segment {
-                    a: at(k[2]),
-                    b: p2(Rng::dyadic, rng),
-                },
-                // parallel
-                _ => {
-                    let off = p2(Rng::dyadic, rng);
-                    Linear2In::Segment {
-                        a: add2(at(k[2]), off),
-                        b: add2(at(k[3]), off),
-                    }
-                }
-            };
-            Case::Linear2(a, b)
+            ]
         }
     }
+}
+
+/// A line or segment in, parallel to, or touching a plane.
+fn degenerate_line_plane(f: &Frame, rng: &mut Rng) -> Case {
+    let plane = f.plane(rng);
+    let line = match rng.below(5) {
+        // a line in the plane
+        0 => LinearIn::Line {
+            origin: f.point(rng),
+            dir: f.along(rng),
+        },
+        // a line parallel to the plane (off it, unless the offset is in it)
+        1 => LinearIn::Line {
+            origin: add(f.point(rng), p3(Rng::dyadic, rng)),
+            dir: f.along(rng),
+        },
+        // a segment in the plane
+        2 => LinearIn::Segment {
+            a: f.point(rng),
+            b: f.point(rng),
+        },
+        // a segment touching the plane at an end point
+        3 => {
+            let (a, b) = (f.point(rng), p3(Rng::dyadic, rng));
+            if rng.coin() {
+                LinearIn::Segment { a, b }
+            } else {
+                LinearIn::Segment { a: b, b: a }
+            }
+        }
+        // a segment parallel to the plane
+        _ => {
+            let a = add(f.point(rng), p3(Rng::dyadic, rng));
+            LinearIn::Segment {
+                a,
+                b: add(a, f.along(rng)),
+            }
+        }
+    };
+    Case::LinePlane(line, plane)
+}
+
+/// Two planes: the same, parallel, or parallel through a point of `g`.
+fn degenerate_plane_plane(f: &Frame, g: &Frame, rng: &mut Rng) -> Case {
+    let other = match rng.below(3) {
+        0 => f.plane(rng),
+        1 => f.shifted(rng).plane(rng),
+        // parallel through a point of g
+        _ => Frame { o: g.o, ..*f }.plane(rng),
+    };
+    Case::PlanePlane(f.plane(rng), other)
+}
+
+/// A point on a line, or off it along a perpendicular.
+fn degenerate_project_line(f: &Frame, rng: &mut Rng) -> Case {
+    let (o, d) = (f.o, f.u);
+    let on = add(o, mul(rng.dyadic(), d));
+    let point = match rng.below(2) {
+        // on the line
+        0 => on,
+        // off it along a perpendicular: the foot is `on`, exactly
+        _ => add(on, mul(rng.small_int(), cross(d, f.v))),
+    };
+    Case::ProjectLine(point, o, d)
+}
+
+/// A point on a plane, or off it along the normal.
+fn degenerate_project_plane(f: &Frame, rng: &mut Rng) -> Case {
+    let on = f.point(rng);
+    let point = match rng.below(2) {
+        0 => on,
+        _ => add(on, mul(rng.small_int(), f.n())),
+    };
+    Case::ProjectPlane(point, f.plane(rng))
+}
+
+/// Two 2D lines: the same line through another point, or parallel.
+fn degenerate_lines2(rng: &mut Rng) -> Case {
+    let (o, d) = (p2(Rng::dyadic, rng), p2(Rng::dyadic, rng));
+    let o2 = match rng.below(2) {
+        // the same line through another point
+        0 => add2(o, mul2(rng.dyadic(), d)),
+        // a parallel line (or the same, if the offset happens to be along d)
+        _ => add2(o, p2(Rng::dyadic, rng)),
+    };
+    Case::Linear2(
+        Linear2In::Line { origin: o, dir: d },
+        Linear2In::Line {
+            origin: o2,
+            dir: mul2(nonzero(rng), d),
+        },
+    )
+}
+
+/// Two 2D segments: collinear, touching at an end point, or parallel.
+fn degenerate_segments2(rng: &mut Rng) -> Case {
+    let (o, d) = (p2(Rng::dyadic, rng), p2(Rng::dyadic, rng));
+    let at = |k: i64| add2(o, mul2(k as f64 / 2.0, d));
+    let k: [i64; 4] = [(); 4].map(|_| rng.int(-4, 4));
+    let a = Linear2In::Segment {
+        a: at(k[0]),
+        b: at(k[1]),
+    };
+    let b = match rng.below(3) {
+        // collinear: overlapping, touching or disjoint
+        0 => Linear2In::Segment {
+            a: at(k[2]),
+            b: at(k[3]),
+        },
+        // an end point on the other segment (a T or an end-to-end touch)
+        1 => Linear2In::Segment {
+            a: at(k[2]),
+            b: p2(Rng::dyadic, rng),
+        },
+        // parallel
+        _ => {
+            let off = p2(Rng::dyadic, rng);
+            Linear2In::Segment {
+                a: add2(at(k[2]), off),
+                b: add2(at(k[3]), off),
+            }
+        }
+    };
+    Case::Linear2(a, b)
 }
 
 /// Visit every coordinate of a case, with whether it is position-like (scaled with the

@@ -6,7 +6,7 @@ use nalgebra::Vector3;
 use rug::Rational;
 
 use super::answer::{self, Answer};
-use super::case::{q, same, Case, Linear2In, LinearIn};
+use super::case::{q, same, Case, Linear2In, LinearIn, PlaneIn, P3};
 use crate::certificate::{Arithmetic, Certified};
 use crate::geom::line_plane::{
     intersect_line_plane, intersect_line_plane_exact, intersect_line_plane_f64,
@@ -51,79 +51,12 @@ fn cert<T>(c: Certified<T>, f: impl FnOnce(T) -> Answer<Rounded>) -> (Answer<Rou
 /// Run geocert's three paths on `case`.
 pub fn geocert(case: &Case) -> Option<Answers> {
     let (truth, plain, (certified, arithmetic)) = match case {
-        Case::ThreePlanes(ps) => {
-            let f = [
-                ps[0].object(same).ok()?,
-                ps[1].object(same).ok()?,
-                ps[2].object(same).ok()?,
-            ];
-            let e = [
-                ps[0].object(q).ok()?,
-                ps[1].object(q).ok()?,
-                ps[2].object(q).ok()?,
-            ];
-            (
-                answer::three_planes(intersect_three_planes_exact(&e)),
-                answer::three_planes(intersect_three_planes_f64(&f)),
-                cert(intersect_three_planes(&f), answer::three_planes),
-            )
-        }
-        Case::LinePlane(l, p) => {
-            let seg = matches!(l, LinearIn::Segment { .. });
-            let (lf, le) = (l.object(same).ok()?, l.object(q).ok()?);
-            let (pf, pe) = (p.object(same).ok()?, p.object(q).ok()?);
-            (
-                answer::line_plane(intersect_line_plane_exact(le.linear(), &pe), seg),
-                answer::line_plane(intersect_line_plane_f64(lf.linear(), &pf), seg),
-                cert(intersect_line_plane(lf.linear(), &pf), |r| {
-                    answer::line_plane(r, seg)
-                }),
-            )
-        }
-        Case::PlanePlane(a, b) => {
-            let (af, ae) = (a.object(same).ok()?, a.object(q).ok()?);
-            let (bf, be) = (b.object(same).ok()?, b.object(q).ok()?);
-            (
-                answer::plane_plane(intersect_plane_plane_exact(&ae, &be)),
-                answer::plane_plane(intersect_plane_plane_f64(&af, &bf)),
-                cert(intersect_plane_plane(&af, &bf), answer::plane_plane),
-            )
-        }
-        Case::ProjectLine(p, o, d) => {
-            let lf = Line::new(v3(o, same), v3(d, same)).ok()?;
-            let le = Line::new(v3(o, q), v3(d, q)).ok()?;
-            (
-                answer::project_line(project_point_line_exact(&v3(p, q), Linear::Line(&le))),
-                answer::project_line(project_point_line_f64(&v3(p, same), Linear::Line(&lf))),
-                cert(
-                    project_point_line(&v3(p, same), Linear::Line(&lf)),
-                    answer::project_line,
-                ),
-            )
-        }
-        Case::ProjectPlane(p, pl) => {
-            let (pf, pe) = (pl.object(same).ok()?, pl.object(q).ok()?);
-            (
-                answer::project_plane(project_point_plane_exact(&v3(p, q), &pe)),
-                answer::project_plane(project_point_plane_f64(&v3(p, same), &pf)),
-                cert(
-                    project_point_plane(&v3(p, same), &pf),
-                    answer::project_plane,
-                ),
-            )
-        }
-        Case::Linear2(a, b) => {
-            let (af, ae) = (a.object(same).ok()?, a.object(q).ok()?);
-            let (bf, be) = (b.object(same).ok()?, b.object(q).ok()?);
-            (
-                answer::linear2(intersect_line2_line2_exact(ae.linear(), be.linear())),
-                answer::linear2(intersect_line2_line2_f64(af.linear(), bf.linear())),
-                cert(
-                    intersect_line2_line2(af.linear(), bf.linear()),
-                    answer::linear2,
-                ),
-            )
-        }
+        Case::ThreePlanes(ps) => three_planes(ps)?,
+        Case::LinePlane(l, p) => line_plane(l, p)?,
+        Case::PlanePlane(a, b) => plane_plane(a, b)?,
+        Case::ProjectLine(p, o, d) => project_line(p, o, d)?,
+        Case::ProjectPlane(p, pl) => project_plane(p, pl)?,
+        Case::Linear2(a, b) => linear2(a, b)?,
     };
     Some(Answers {
         truth,
@@ -131,6 +64,94 @@ pub fn geocert(case: &Case) -> Option<Answers> {
         certified,
         arithmetic,
     })
+}
+
+/// The truth, the plain answer, and the certified answer with its arithmetic.
+type Paths = (Answer<Rational>, Answer<f64>, (Answer<Rounded>, Arithmetic));
+
+/// Three planes.
+fn three_planes(ps: &[PlaneIn; 3]) -> Option<Paths> {
+    let f = [
+        ps[0].object(same).ok()?,
+        ps[1].object(same).ok()?,
+        ps[2].object(same).ok()?,
+    ];
+    let e = [
+        ps[0].object(q).ok()?,
+        ps[1].object(q).ok()?,
+        ps[2].object(q).ok()?,
+    ];
+    Some((
+        answer::three_planes(intersect_three_planes_exact(&e)),
+        answer::three_planes(intersect_three_planes_f64(&f)),
+        cert(intersect_three_planes(&f), answer::three_planes),
+    ))
+}
+
+/// Line or segment ∩ plane.
+fn line_plane(l: &LinearIn, p: &PlaneIn) -> Option<Paths> {
+    let seg = matches!(l, LinearIn::Segment { .. });
+    let (lf, le) = (l.object(same).ok()?, l.object(q).ok()?);
+    let (pf, pe) = (p.object(same).ok()?, p.object(q).ok()?);
+    Some((
+        answer::line_plane(intersect_line_plane_exact(le.linear(), &pe), seg),
+        answer::line_plane(intersect_line_plane_f64(lf.linear(), &pf), seg),
+        cert(intersect_line_plane(lf.linear(), &pf), |r| {
+            answer::line_plane(r, seg)
+        }),
+    ))
+}
+
+/// Plane ∩ plane.
+fn plane_plane(a: &PlaneIn, b: &PlaneIn) -> Option<Paths> {
+    let (af, ae) = (a.object(same).ok()?, a.object(q).ok()?);
+    let (bf, be) = (b.object(same).ok()?, b.object(q).ok()?);
+    Some((
+        answer::plane_plane(intersect_plane_plane_exact(&ae, &be)),
+        answer::plane_plane(intersect_plane_plane_f64(&af, &bf)),
+        cert(intersect_plane_plane(&af, &bf), answer::plane_plane),
+    ))
+}
+
+/// A point projected onto a line.
+fn project_line(p: &P3, o: &P3, d: &P3) -> Option<Paths> {
+    let lf = Line::new(v3(o, same), v3(d, same)).ok()?;
+    let le = Line::new(v3(o, q), v3(d, q)).ok()?;
+    Some((
+        answer::project_line(project_point_line_exact(&v3(p, q), Linear::Line(&le))),
+        answer::project_line(project_point_line_f64(&v3(p, same), Linear::Line(&lf))),
+        cert(
+            project_point_line(&v3(p, same), Linear::Line(&lf)),
+            answer::project_line,
+        ),
+    ))
+}
+
+/// A point projected onto a plane.
+fn project_plane(p: &P3, pl: &PlaneIn) -> Option<Paths> {
+    let (pf, pe) = (pl.object(same).ok()?, pl.object(q).ok()?);
+    Some((
+        answer::project_plane(project_point_plane_exact(&v3(p, q), &pe)),
+        answer::project_plane(project_point_plane_f64(&v3(p, same), &pf)),
+        cert(
+            project_point_plane(&v3(p, same), &pf),
+            answer::project_plane,
+        ),
+    ))
+}
+
+/// Two 2D lines or segments.
+fn linear2(a: &Linear2In, b: &Linear2In) -> Option<Paths> {
+    let (af, ae) = (a.object(same).ok()?, a.object(q).ok()?);
+    let (bf, be) = (b.object(same).ok()?, b.object(q).ok()?);
+    Some((
+        answer::linear2(intersect_line2_line2_exact(ae.linear(), be.linear())),
+        answer::linear2(intersect_line2_line2_f64(af.linear(), bf.linear())),
+        cert(
+            intersect_line2_line2(af.linear(), bf.linear()),
+            answer::linear2,
+        ),
+    ))
 }
 
 /// Whether CGAL Epick can be asked `case` without killing the process. Epick builds
@@ -233,6 +254,8 @@ fn epick_unguarded(case: &Case) -> Answer<f64> {
                 kind: Kind::Segment,
                 coords: source.iter().chain(&target).copied().collect(),
             },
+            // (no construction of the table gives a ray)
+            Ok(Intersection::Ray { .. }) => Answer::kind(Kind::Error),
             Ok(Intersection::Plane(_)) => Answer::kind(Kind::Plane),
             Err(_) => Answer::kind(Kind::Error),
         }

@@ -11,10 +11,15 @@ pub mod answer;
 pub mod case;
 pub mod gen;
 pub mod kettner;
+pub mod line_line;
 pub mod methods;
-pub mod rng;
 pub mod table;
 
+#[cfg(test)]
+mod lane_tests;
+
+/// The generators' random stream (it lives in `num`, below the layers whose tests use it).
+pub use crate::num::rng;
 pub use case::Case;
 pub use gen::{case, Construction, Generator};
 pub use table::{robustness_table, Table};

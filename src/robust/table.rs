@@ -16,8 +16,8 @@ use super::answer::{grade, grade_certified, rounded_truth, Grade};
 use super::gen::{case, Construction, Generator};
 use super::kettner::{self, KettnerCounts};
 use super::methods;
-use super::rng::Rng;
 use crate::certificate::Arithmetic;
+use crate::num::rng::Rng;
 
 /// Wrong verdicts and coordinates off by more than one ulp.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -180,6 +180,19 @@ fn errors(e: &Option<Errors>) -> (String, String, String) {
 
 impl fmt::Display for Table {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        self.fmt_rows(f)?;
+        self.fmt_kettner(f)?;
+        writeln!(
+            f,
+            "\ngeocert certified: {} wrong answers in total.",
+            self.certified_failures()
+        )
+    }
+}
+
+impl Table {
+    /// The header (seed, what the columns count) and a row per construction and generator.
+    fn fmt_rows(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let cgal = self.rows.first().is_some_and(|r| r.epick.is_some());
         writeln!(
             f,
@@ -242,6 +255,11 @@ impl fmt::Display for Table {
                 r.certified.off
             )?;
         }
+        Ok(())
+    }
+
+    /// The Kettner et al. near-collinear grid's line.
+    fn fmt_kettner(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let k = &self.kettner;
         writeln!(f)?;
         writeln!(
@@ -262,10 +280,6 @@ impl fmt::Display for Table {
             )?,
             None => writeln!(f, "  CGAL Epick: not built in.")?,
         }
-        writeln!(
-            f,
-            "\ngeocert certified: {} wrong answers in total.",
-            self.certified_failures()
-        )
+        Ok(())
     }
 }

@@ -3,10 +3,9 @@
 //! `j` in the row ↔ `u`.
 
 use super::basis::bernstein_jet;
-use super::nurbs::validate_net;
 use super::taylor::{centre, is_point, taylor_tensor_jet};
 use super::taylor_fast::{try_centred_jet, BasisSource};
-use super::tensor::{tensor_jet, Net};
+use super::tensor::{tensor_jet, validate_net, Net};
 use super::validate::{restrict_domain, Domain};
 use super::Surface;
 use crate::error::GeomError;
@@ -46,16 +45,11 @@ impl BezierSurface {
     }
     /// The control points, row by row.
     pub fn points(&self) -> Vec<Vec<[f64; 3]>> {
-        self.net
-            .points
-            .chunks(self.net.cols)
-            .map(<[_]>::to_vec)
-            .collect()
+        self.net.point_rows()
     }
     /// The weights, row by row, if rational.
     pub fn weights(&self) -> Option<Vec<Vec<f64>>> {
-        let w = self.net.weights.as_ref()?;
-        Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
+        self.net.weight_rows()
     }
 }
 

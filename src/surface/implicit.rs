@@ -78,6 +78,23 @@ fn diagonal_quadric<T: Real>(l: &[T; 3], c: [T; 3], linear_z: T, constant: T) ->
     (value, gradient, hessian)
 }
 
+/// `x²/a² + σ y²/b² + c_z·z + c₀` (`σ = ±1`): the paraboloids and the elliptic
+/// cylinder in local coordinates.
+fn elliptic<T: Real>(
+    l: &[T; 3],
+    [a, b]: [f64; 2],
+    sigma: f64,
+    linear_z: f64,
+    constant: f64,
+) -> Full<T> {
+    let k = [
+        inv_sq(&l[0], a, 1.0),
+        inv_sq(&l[0], b, sigma),
+        l[0].zero_like(),
+    ];
+    diagonal_quadric(l, k, l[0].lift(linear_z), l[0].lift(constant))
+}
+
 /// `±1/s²` in the number type.
 fn inv_sq<T: Real>(like: &T, s: f64, sign: f64) -> T {
     like.lift(sign) / like.lift(s).sqr()
@@ -127,13 +144,7 @@ impl Implicit<3> for Paraboloid {
     /// `x²/a² + y²/b² − z`.
     fn implicit_jet<T: Real>(&self, x: &[T; 3], order: usize) -> ImplicitJet<T, 3> {
         in_frame(&self.frame, x, order, |l| {
-            let [a, b] = self.ab;
-            let k = [
-                inv_sq(&l[0], a, 1.0),
-                inv_sq(&l[0], b, 1.0),
-                l[0].zero_like(),
-            ];
-            diagonal_quadric(l, k, l[0].lift(-1.0), l[0].zero_like())
+            elliptic(l, self.ab, 1.0, -1.0, 0.0)
         })
     }
 }
@@ -142,13 +153,7 @@ impl Implicit<3> for ParaboloidRect {
     /// `x²/a² + σ y²/b² − z`.
     fn implicit_jet<T: Real>(&self, x: &[T; 3], order: usize) -> ImplicitJet<T, 3> {
         in_frame(&self.frame, x, order, |l| {
-            let [a, b] = self.ab;
-            let k = [
-                inv_sq(&l[0], a, 1.0),
-                inv_sq(&l[0], b, self.sign),
-                l[0].zero_like(),
-            ];
-            diagonal_quadric(l, k, l[0].lift(-1.0), l[0].zero_like())
+            elliptic(l, self.ab, self.sign, -1.0, 0.0)
         })
     }
 }
@@ -157,13 +162,7 @@ impl Implicit<3> for Cylinder {
     /// `x²/a² + y²/b² − 1`.
     fn implicit_jet<T: Real>(&self, x: &[T; 3], order: usize) -> ImplicitJet<T, 3> {
         in_frame(&self.frame, x, order, |l| {
-            let [a, b] = self.ab;
-            let k = [
-                inv_sq(&l[0], a, 1.0),
-                inv_sq(&l[0], b, 1.0),
-                l[0].zero_like(),
-            ];
-            diagonal_quadric(l, k, l[0].zero_like(), l[0].lift(-1.0))
+            elliptic(l, self.ab, 1.0, 0.0, -1.0)
         })
     }
 }

@@ -1,4 +1,4 @@
-//! Parametric and implicit surfaces (OPERATIONS.md §1.3–§1.4, §1.6; spec/CASES.md
+//! Parametric and implicit surfaces (OPERATIONS.md §1.3–§1.4, §1.6; docs/FORMAT.md
 //! surface types).
 //!
 //! Like curves, a surface supplies only its value and derivatives, generic over the
@@ -25,6 +25,7 @@ mod tensor;
 pub mod torus;
 pub mod validate;
 
+pub use crate::curve::implicit::{Implicit, ImplicitJet};
 pub use any::{AnyImplicit, AnySurface};
 pub use differential::FundamentalForms;
 
@@ -116,24 +117,4 @@ pub trait Surface {
     fn principal_curvatures<T: Real>(&self, u: &T, v: &T) -> (T, T) {
         self.fundamental_forms(u, v).principal_curvatures()
     }
-}
-
-/// An implicit hypersurface `F(x) = 0` in `D` dimensions: an implicit surface for
-/// `D = 3` (§1.4), an implicit plane curve (`conic2`) for `D = 2`.
-///
-/// Side convention of §1.4: `F > 0` outside, `F < 0` inside.
-pub trait Implicit<const D: usize> {
-    /// `F(x)`; with `order ≥ 1` also the gradient, with `order ≥ 2` the Hessian.
-    fn implicit_jet<T: Real>(&self, x: &[T; D], order: usize) -> ImplicitJet<T, D>;
-}
-
-/// The value of an implicit function and, when requested, its gradient and Hessian.
-#[derive(Debug, Clone, PartialEq)]
-pub struct ImplicitJet<T, const D: usize> {
-    /// `F(x)`.
-    pub value: T,
-    /// `∇F(x)` (present when `order ≥ 1`).
-    pub gradient: Option<[T; D]>,
-    /// The Hessian `∂²F/∂xᵢ∂xⱼ` (present when `order ≥ 2`).
-    pub hessian: Option<[[T; D]; D]>,
 }

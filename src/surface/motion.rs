@@ -65,7 +65,7 @@ impl<C: Curve<3>> Surface for Extrusion<C> {
     }
 }
 
-/// Revolution (1.14) with the parameters of spec/CASES.md: `u` is the rotation angle,
+/// Revolution (1.14) with the parameters of the case format: `u` is the rotation angle,
 /// `v` the profile parameter:
 /// `s(u, v) = q + w∥ + cos u·w⊥ + sin u·(e × w)`, `w = c(v) − q`, `w∥ = e(e·w)`,
 /// `w⊥ = w − w∥`, `e = axis/|axis|` (normalised in the formula). `u ∈ [0, γ]`, closed in

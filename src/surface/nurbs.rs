@@ -13,10 +13,10 @@ use super::basis::{bspline_jet, spans_touching, BasisJet};
 use super::sets::hull;
 use super::taylor::{centre, is_point, taylor_tensor_jet};
 use super::taylor_fast::{try_centred_jet, BasisSource};
-use super::tensor::{tensor_jet, Net};
-use super::validate::{degree, knot_vector, positive, restrict_domain, Domain};
+use super::tensor::{tensor_jet, validate_net, Net};
+use super::validate::{degree, knot_vector, restrict_domain, Domain};
 use super::Surface;
-use crate::error::{require_finite_all, GeomError};
+use crate::error::GeomError;
 use crate::num::Real;
 
 /// A validated NURBS patch.
@@ -26,86 +26,6 @@ pub struct NurbsSurface {
     pub(crate) knots: [Vec<f64>; 2],
     pub(crate) net: Net,
     domain: Domain,
-}
-
-/// Check a rectangular net of at least `min_rows × min_cols` finite points and its
-/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`).
-pub(crate) fn validate_net(
-    points: &[Vec<[f64; 3]>],
-    weights: Option<&[Vec<f64>]>,
-    min_rows: usize,
-    min_cols: usize,
-) -> Result<Net, GeomError> {
-    let rows = points.len();
-    if rows < min_rows {
-        return Err(GeomError::CountMismatch {
-            field: "points".into(),
-            expected: format!("at least {min_rows} rows"),
-            found: format!("{rows}"),
-        });
-    }
-    let cols = points[0].len();
-    if cols < min_cols {
-        return Err(GeomError::CountMismatch {
-            field: "points[0]".into(),
-            expected: format!("at least {min_cols} points per row"),
-            found: format!("{cols}"),
-        });
-    }
-    let mut flat = Vec::with_capacity(rows * cols);
-    for (i, r) in points.iter().enumerate() {
-        if r.len() != cols {
-            return Err(GeomError::CountMismatch {
-                field: format!("points[{i}]"),
-                expected: format!("{cols} points (as row 0)"),
-                found: format!("{}", r.len()),
-            });
-        }
-        for (j, p) in r.iter().enumerate() {
-            require_finite_all(&format!("points[{i}][{j}]"), p)?;
-            flat.push(*p);
-        }
-    }
-    let weights = match weights {
-        None => None,
-        Some(w) => {
-            if w.len() != rows {
-                return Err(GeomError::CountMismatch {
-                    field: "weights".into(),
-                    expected: format!("{rows} rows (as points)"),
-                    found: format!("{}", w.len()),
-                });
-            }
-            let mut flat_w = Vec::with_capacity(rows * cols);
-            for (i, r) in w.iter().enumerate() {
-                if r.len() != cols {
-                    return Err(GeomError::CountMismatch {
-                        field: format!("weights[{i}]"),
-                        expected: format!("{cols} weights (as points[{i}])"),
-                        found: format!("{}", r.len()),
-                    });
-                }
-                for (j, &x) in r.iter().enumerate() {
-                    let field = format!("weights[{i}][{j}]");
-                    positive(&field, x).map_err(|e| match e {
-                        GeomError::InvalidValue { field, .. } => GeomError::NonPositiveWeight {
-                            field,
-                            value: format!("{x}"),
-                        },
-                        other => other,
-                    })?;
-                    flat_w.push(x);
-                }
-            }
-            Some(flat_w)
-        }
-    };
-    Ok(Net {
-        rows,
-        cols,
-        points: flat,
-        weights,
-    })
 }
 
 impl NurbsSurface {
@@ -147,16 +67,11 @@ impl NurbsSurface {
     }
     /// The control points, row by row.
     pub fn points(&self) -> Vec<Vec<[f64; 3]>> {
-        self.net
-            .points
-            .chunks(self.net.cols)
-            .map(<[_]>::to_vec)
-            .collect()
+        self.net.point_rows()
     }
     /// The weights, row by row, if rational.
     pub fn weights(&self) -> Option<Vec<Vec<f64>>> {
-        let w = self.net.weights.as_ref()?;
-        Some(w.chunks(self.net.cols).map(<[_]>::to_vec).collect())
+        self.net.weight_rows()
     }
 
     /// The jet by the direct sums `Σ N_j(u) N_i(v) w_ij P_ij` even over interval boxes:
@@ -302,5 +217,30 @@ impl Surface for NurbsSurface {
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         // Interval boxes: the centred form (super::taylor); points: the direct sums.
         self.evaluate(u, v, order, !is_point(u) || !is_point(v))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::num::Interval;
+    use crate::surface::taylor_fast::tests::{patch_points, KNOTS};
+
+    /// An f64 interval box inside one span pair takes the fast centred form of
+    /// `taylor_fast`, at scales from 1e−250 to 1e250.
+    #[test]
+    fn interval_boxes_take_the_fast_path() {
+        for scale in [1e-250, 1e-12, 1e250] {
+            let (points, weights) = patch_points(scale);
+            let knots = KNOTS.to_vec();
+            let s =
+                NurbsSurface::new([3, 3], knots.clone(), knots, &points, Some(&weights)).unwrap();
+            let (u, v) = (
+                Interval::from_bounds(0.3, 0.3 + 1e-4),
+                Interval::from_bounds(0.6, 0.6 + 1e-4),
+            );
+            let fast = try_centred_jet(&s.net, s.source(0, 3), &u, s.source(1, 3), &v, 2);
+            assert_eq!(Some(s.jet(&u, &v, 2)), fast, "scale {scale:e}");
+        }
     }
 }

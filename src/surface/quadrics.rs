@@ -1,5 +1,5 @@
 //! Quadrics of OPERATIONS.md §1.6 with the parametrisations and default domains of
-//! spec/CASES.md: sphere, ellipsoid, hyperboloids of one and two sheets, the elliptic
+//! docs/FORMAT.md: sphere, ellipsoid, hyperboloids of one and two sheets, the elliptic
 //! paraboloid (polar form), elliptic cylinder and circular cone. All share the formula of
 //! `surface::rotational`; the rectangular paraboloids ([Y 3.2.12], [Y 3.2.13]) are
 //! [`super::plane::ParaboloidRect`].

@@ -62,7 +62,8 @@ fn powers<T: Real>(delta: &T, n: usize) -> Vec<T> {
 }
 
 /// The homogeneous jet `∂_u^a ∂_v^b H` over the box `m + δ` (jet order), of dimension `D`,
-/// with `H` translated so that `C_00 ≈ 0` in its first three components.
+/// with `H` translated so that `C_00 ≈ 0` in its first three components; also the same
+/// derivatives at the centre, and the translation `P_ref`.
 #[allow(clippy::too_many_arguments)]
 fn centred_homogeneous<T: Real, const D: usize>(
     bu: &BasisJet<T>,
@@ -75,24 +76,62 @@ fn centred_homogeneous<T: Real, const D: usize>(
     point: impl Fn(usize, usize) -> [T; D],
 ) -> ([f64; 3], Vec<[T; D]>, Vec<[T; D]>) {
     let like = delta_u;
-    let (p, q) = (bu.degree, bv.degree);
-    let zero = like.zero_like();
-    let zeros = || -> [T; D] { std::array::from_fn(|_| zero.clone()) };
-    // Taylor coefficients of the basis at the centres: a[k][j] = N_j^{(k)}(m_u)/k!.
-    let taylor = |b: &BasisJet<T>, n: usize| -> Vec<T> {
-        let mut out = Vec::with_capacity((n + 1) * (n + 1));
-        for k in 0..=n {
-            let f = like.lift(factorial(k));
-            out.extend((0..=n).map(|j| b.get(k, j).clone() / &f));
-        }
-        out
+    let (a, b) = (basis_taylor(bu, like), basis_taylor(bv, like));
+    let shape = Shape {
+        p: bu.degree,
+        q: bv.degree,
     };
-    let (a, b) = (taylor(bu, p), taylor(bv, q));
-    // rows[i·(p+1) + k] = Σ_j a_kj Q_(first_v+i),(first_u+j)
-    let mut rows: Vec<[T; D]> = vec![zeros(); (q + 1) * (p + 1)];
+    let point = |i, j| point(first_v + i, first_u + j);
+    let mut coef = patch_coefficients(&a, &b, shape, point, like);
+    let reference = translate(&mut coef, like);
+    let len = match order {
+        0 => 1,
+        1 => 3,
+        _ => 6,
+    };
+    let at_centre = at_centre(&coef, shape, len, like);
+    let over_box = over_box(&coef, shape, delta_u, delta_v, order, len);
+    (reference, over_box, at_centre)
+}
+
+/// The degrees `(p, q)` of a span pair: its coefficients `C_kl` are stored at
+/// `k·(q+1) + l`.
+#[derive(Clone, Copy)]
+struct Shape {
+    p: usize,
+    q: usize,
+}
+
+/// `D` zeros in the number system of `like`.
+fn zeros<T: Real, const D: usize>(like: &T) -> [T; D] {
+    std::array::from_fn(|_| like.zero_like())
+}
+
+/// Taylor coefficients of the basis at the centre: `a[k·(n+1) + j] = N_j^{(k)}(m)/k!`.
+fn basis_taylor<T: Real>(b: &BasisJet<T>, like: &T) -> Vec<T> {
+    let n = b.degree;
+    let mut out = Vec::with_capacity((n + 1) * (n + 1));
+    for k in 0..=n {
+        let f = like.lift(factorial(k));
+        out.extend((0..=n).map(|j| b.get(k, j).clone() / &f));
+    }
+    out
+}
+
+/// The patch's Taylor coefficients at the centre, `C_kl = Σ_i b_li Σ_j a_kj Q_ij`, from
+/// the basis coefficients and the control points `point(i, j)` of the span pair.
+fn patch_coefficients<T: Real, const D: usize>(
+    a: &[T],
+    b: &[T],
+    Shape { p, q }: Shape,
+    point: impl Fn(usize, usize) -> [T; D],
+    like: &T,
+) -> Vec<[T; D]> {
+    // rows[i·(p+1) + k] = Σ_j a_kj Q_ij
+    let mut rows: Vec<[T; D]> = vec![zeros(like); (q + 1) * (p + 1)];
     for i in 0..=q {
         for j in 0..=p {
-            let pt = point(first_v + i, first_u + j);
+            let pt = point(i, j);
             for k in 0..=p {
                 let (akj, r) = (&a[k * (p + 1) + j], &mut rows[i * (p + 1) + k]);
                 for c in 0..D {
@@ -102,7 +141,7 @@ fn centred_homogeneous<T: Real, const D: usize>(
         }
     }
     // coef[k·(q+1) + l] = Σ_i b_li rows[i][k]
-    let mut coef: Vec<[T; D]> = vec![zeros(); (p + 1) * (q + 1)];
+    let mut coef: Vec<[T; D]> = vec![zeros(like); (p + 1) * (q + 1)];
     for k in 0..=p {
         for l in 0..=q {
             let acc = &mut coef[k * (q + 1) + l];
@@ -114,7 +153,12 @@ fn centred_homogeneous<T: Real, const D: usize>(
             }
         }
     }
-    // Translate by P_ref ≈ s(m): A' = A − P_ref·W (W ≡ 1 for polynomial patches, D = 3).
+    coef
+}
+
+/// Translate by `P_ref ≈ s(m)`: `A' = A − P_ref·W` (`W ≡ 1` for polynomial patches,
+/// `D = 3`). Returns `P_ref`.
+fn translate<T: Real, const D: usize>(coef: &mut [[T; D]], like: &T) -> [f64; 3] {
     let c00 = &coef[0];
     let reference: [f64; 3] = std::array::from_fn(|c| {
         let x = if D == 4 {
@@ -140,34 +184,69 @@ fn centred_homogeneous<T: Real, const D: usize>(
             coef[0][c] = coef[0][c].clone() - &r[c];
         }
     }
-    // Powers of δ with the derivative factors: fu[a][k] = k!/(k−a)! δ_u^{k−a}.
-    let scaled = |delta: &T, n: usize| -> [Vec<T>; 3] {
-        let pw = powers(delta, n);
-        std::array::from_fn(|a| {
-            (0..=n)
-                .map(|k| {
-                    if k < a {
-                        zero.clone()
-                    } else {
-                        like.lift(falling(k, a)) * &pw[k - a]
-                    }
-                })
-                .collect()
+    reference
+}
+
+/// The derivatives at the centre (`δ = 0`), the first `len` in jet order:
+/// `∂_u^a ∂_v^b H(m) = a! b! C_ab`.
+fn at_centre<T: Real, const D: usize>(
+    coef: &[[T; D]],
+    Shape { p, q }: Shape,
+    len: usize,
+    like: &T,
+) -> Vec<[T; D]> {
+    ORDERS[..len]
+        .iter()
+        .map(|&(da, db)| {
+            let f = like.lift(factorial(da) * factorial(db));
+            let c = if da <= p && db <= q {
+                coef[da * (q + 1) + db].clone()
+            } else {
+                zeros(like)
+            };
+            std::array::from_fn(|i| f.clone() * &c[i])
         })
-    };
-    let (fu, fv) = (scaled(delta_u, p), scaled(delta_v, q));
-    // g[b][k] = Σ_l fv[b][l] coef[k][l]; then H_ab = Σ_k fu[a][k] g[b][k].
-    let len = match order {
-        0 => 1,
-        1 => 3,
-        _ => 6,
-    };
+        .collect()
+}
+
+/// Powers of `δ` with the derivative factors: `f[a][k] = k!/(k−a)! δ^{k−a}` (`a ≤ 2`,
+/// `k ≤ n`; 0 for `k < a`), constants in the number system of `like`.
+fn derivative_powers<T: Real>(delta: &T, n: usize, like: &T) -> [Vec<T>; 3] {
+    let pw = powers(delta, n);
+    std::array::from_fn(|a| {
+        (0..=n)
+            .map(|k| {
+                if k < a {
+                    like.zero_like()
+                } else {
+                    like.lift(falling(k, a)) * &pw[k - a]
+                }
+            })
+            .collect()
+    })
+}
+
+/// The derivatives over the box, the first `len` in jet order: with
+/// `g[b][k] = Σ_l fv[b][l] C_kl`, `H_ab = Σ_k fu[a][k] g[b][k]`.
+fn over_box<T: Real, const D: usize>(
+    coef: &[[T; D]],
+    Shape { p, q }: Shape,
+    delta_u: &T,
+    delta_v: &T,
+    order: usize,
+    len: usize,
+) -> Vec<[T; D]> {
+    let like = delta_u;
+    let (fu, fv) = (
+        derivative_powers(delta_u, p, like),
+        derivative_powers(delta_v, q, like),
+    );
     let b_max = order.min(2);
     let g: Vec<Vec<[T; D]>> = (0..=b_max)
         .map(|bb| {
             (0..=p)
                 .map(|k| {
-                    let mut acc = zeros();
+                    let mut acc = zeros(like);
                     for l in bb..=q {
                         let f = &fv[bb][l];
                         let cl = &coef[k * (q + 1) + l];
@@ -180,23 +259,10 @@ fn centred_homogeneous<T: Real, const D: usize>(
                 .collect()
         })
         .collect();
-    // The same derivatives at the centre (δ = 0): ∂_u^a ∂_v^b H(m) = a! b! C_ab.
-    let at_centre = ORDERS[..len]
+    ORDERS[..len]
         .iter()
         .map(|&(da, db)| {
-            let f = like.lift(factorial(da) * factorial(db));
-            let c = if da <= p && db <= q {
-                coef[da * (q + 1) + db].clone()
-            } else {
-                zeros()
-            };
-            std::array::from_fn(|i| f.clone() * &c[i])
-        })
-        .collect();
-    let h = ORDERS[..len]
-        .iter()
-        .map(|&(da, db)| {
-            let mut acc = zeros();
+            let mut acc = zeros(like);
             for k in da..=p {
                 let f = &fu[da][k];
                 for c in 0..D {
@@ -205,8 +271,7 @@ fn centred_homogeneous<T: Real, const D: usize>(
             }
             acc
         })
-        .collect();
-    (reference, h, at_centre)
+        .collect()
 }
 
 /// The jet of the patch on one pair of spans over the box `m + δ`, from the basis

@@ -21,10 +21,8 @@
 
 use super::basis::{bernstein_jet, bspline_jet, BasisJet};
 use super::tensor::{quotient, Net, ORDERS};
-use crate::certify::guarded::Guarded;
 use crate::num::midrad::{inflate, up, MidRad, EPS, ETA, U};
 use crate::num::{Interval, Real};
-use std::any::Any;
 
 /// Degrees up to 7 per direction: `(p+1)(q+1) ≤ 64` terms per sum, as [`inflate`] needs.
 const MAX_N: usize = 8;
@@ -156,14 +154,15 @@ fn centre(t: &Interval) -> Option<(f64, f64, bool)> {
 }
 
 /// The centred form of [`super::taylor::taylor_tensor_jet`] over the box `u × v` on one
-/// pair of spans, for `T = Interval` and for the certifier's `Guarded<Interval>`, in
-/// midpoint–radius form; `None` for any other number type, or when the fast path
-/// declines (module doc).
+/// pair of spans, for the number types that are f64 intervals ([`Real::as_f64_interval`]:
+/// `Interval`, and the certifier's `Guarded<Interval>`), in midpoint–radius form; `None`
+/// for any other number type, or when the fast path declines (module doc).
 ///
-/// `Guarded` (smoothness-tracking) values: on one pair of spans the patch is a
-/// polynomial, or a quotient whose denominator the fast path has proven positive over
-/// the box, so it is `C^∞` there and the jet is smooth exactly when both parameters are
-/// (the hull over several spans is marked non-smooth by the caller's join).
+/// The result goes back through [`Real::from_f64_interval`] with `u, v` as arguments:
+/// on one pair of spans the patch is a polynomial, or a quotient whose denominator the
+/// fast path has proven positive over the box, so it is `C^∞` there (a `Guarded` jet is
+/// smooth exactly when both parameters are; the hull over several spans is marked
+/// non-smooth by the caller's join).
 pub(crate) fn try_centred_jet<T: Real>(
     net: &Net,
     source_u: BasisSource,
@@ -172,26 +171,18 @@ pub(crate) fn try_centred_jet<T: Real>(
     v: &T,
     order: usize,
 ) -> Option<Vec<[T; 3]>> {
-    let (u, v) = (u as &dyn Any, v as &dyn Any);
-    let out: Box<dyn Any> =
-        if let (Some(u), Some(v)) = (u.downcast_ref::<Interval>(), v.downcast_ref::<Interval>()) {
-            Box::new(interval_jet(net, source_u, u, source_v, v, order)?)
-        } else {
-            let u = u.downcast_ref::<Guarded<Interval>>()?;
-            let v = v.downcast_ref::<Guarded<Interval>>()?;
-            let jet = interval_jet(net, source_u, &u.value, source_v, &v.value, order)?;
-            let smooth = u.smooth && v.smooth;
-            let guard = |value: Interval| Guarded {
-                value,
-                smooth: smooth && !value.is_empty(),
-            };
-            Box::new(
-                jet.into_iter()
-                    .map(|e| e.map(guard))
-                    .collect::<Vec<[Guarded<Interval>; 3]>>(),
-            )
-        };
-    out.downcast().ok().map(|b| *b)
+    let jet = interval_jet(net, source_u, &view(u)?, source_v, &view(v)?, order)?;
+    let back = |x: &Interval| T::from_f64_interval([x.lo(), x.hi()], &[u, v]);
+    jet.iter()
+        .map(|[x, y, z]| Some([back(x)?, back(y)?, back(z)?]))
+        .collect()
+}
+
+/// The f64 interval a parameter is, if it is one and not empty (an empty parameter
+/// takes the generic path, as [`centre`] would decline it).
+fn view<T: Real>(t: &T) -> Option<Interval> {
+    let [lo, hi] = t.as_f64_interval()?;
+    (lo <= hi).then(|| Interval::from_bounds(lo, hi))
 }
 
 fn interval_jet(
@@ -295,22 +286,37 @@ fn untranslate(jet: &mut [[Interval; 3]], reference: &[f64; 3]) {
     }
 }
 
-#[allow(clippy::type_complexity, clippy::needless_range_loop)]
+/// Per span pair: one `D`-vector per basis pair `(k, l)` (or control point `(i, j)`).
+type Grid<const D: usize> = [[[f64; D]; MAX_N]; MAX_N];
+
+/// The centred Taylor coefficients of the homogeneous patch at the box centre, with
+/// rigorous error bounds, translated by `P_ref ≈ s(m)`; then the jet (in [`ORDERS`]
+/// order) over the box and at the centre, as midpoint–radius enclosures: `(P_ref,
+/// over_box, at_centre)`. `None` when a bound is not finite.
+#[allow(clippy::type_complexity)]
 fn centred_f64<const D: usize>(
     net: &Net,
     spans: &Spans,
     order: usize,
 ) -> Option<([f64; 3], Vec<[MidRad; D]>, Vec<[MidRad; D]>)> {
-    let (a, b) = (&spans.a, &spans.b);
-    let (first_u, first_v) = (spans.first_u, spans.first_v);
-    let (nu, nv) = (a.n, b.n);
-    // The control data Q̃_ij = (RN(w·P), w) or P, and per component the largest |Q̃|:
-    // |Q − Q̃| ≤ ulp(Q̃)/2 ≤ κ_c and |Q| ≤ Q̂_c.
+    let (q, qmax) = control_data::<D>(net, spans);
+    let mut coef = coefficients(&spans.a, &spans.b, &q);
+    let mut err = error_bounds(&spans.a, &spans.b, &qmax);
+    let reference = translate(&mut coef, &mut err, spans.a.n, spans.b.n);
+    let (over_box, at_centre) = jets(&coef, &err, spans, order)?;
+    Some((reference, over_box, at_centre))
+}
+
+/// The control data `Q̃_ij = (RN(w·P), w)` or `P` of the span pair, and per component
+/// the largest `|Q̃|`: `|Q − Q̃| ≤ ulp(Q̃)/2 ≤ κ_c` and `|Q| ≤ Q̂_c` (see [`error_bounds`]).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn control_data<const D: usize>(net: &Net, spans: &Spans) -> (Grid<D>, [f64; D]) {
     let mut q = [[[0.0; D]; MAX_N]; MAX_N];
     let mut qmax = [0.0f64; D];
-    for (i, row) in q.iter_mut().enumerate().take(nv) {
-        for (j, x) in row.iter_mut().enumerate().take(nu) {
-            let k = (first_v + i) * net.cols + first_u + j;
+    for (i, row) in q.iter_mut().enumerate().take(spans.b.n) {
+        for (j, x) in row.iter_mut().enumerate().take(spans.a.n) {
+            let k = (spans.first_v + i) * net.cols + spans.first_u + j;
             let p = net.points[k];
             for c in 0..D {
                 x[c] = match &net.weights {
@@ -322,9 +328,14 @@ fn centred_f64<const D: usize>(
             }
         }
     }
-    let q_hat: [f64; D] = std::array::from_fn(|c| up(qmax[c]));
-    let kappa: [f64; D] = std::array::from_fn(|c| up(qmax[c] * EPS));
-    // Rows R̃_ik = Σ_j ã_kj Q̃_ij, then C̃_kl = Σ_i b̃_li R̃_ik (RN dot products).
+    (q, qmax)
+}
+
+/// Rows `R̃_ik = Σ_j ã_kj Q̃_ij`, then `C̃_kl = Σ_i b̃_li R̃_ik` (RN dot products).
+#[allow(clippy::needless_range_loop)]
+#[inline(always)]
+fn coefficients<const D: usize>(a: &Basis, b: &Basis, q: &Grid<D>) -> Grid<D> {
+    let (nu, nv) = (a.n, b.n);
     let mut rows = [[[0.0; D]; MAX_N]; MAX_N];
     for i in 0..nv {
         for k in 0..nu {
@@ -349,10 +360,20 @@ fn centred_f64<const D: usize>(
             }
         }
     }
-    // Error bounds E_kl ≥ |C_kl − C̃_kl|. With R_ik the exact row sums:
-    //   |R_ik − R̃_ik| ≤ Σ_j α_kj|Q_ij| + Σ_j |ã_kj| κ + γ_n Σ_j |ã_kj||Q̃_ij| + n·η =: ρ_k
-    //   |R_ik| ≤ Â_k Q̂ =: R_k,   |R̃_ik| ≤ R_k + ρ_k =: R̃_k,
-    //   |C_kl − C̃_kl| ≤ Σ_i β_li |R_ik| + Σ_i |b̃_li| ρ_k + γ_n Σ_i |b̃_li||R̃_ik| + n·η.
+    coef
+}
+
+/// Error bounds `E_kl ≥ |C_kl − C̃_kl|` of [`coefficients`]. With `R_ik` the exact row sums:
+///   `|R_ik − R̃_ik| ≤ Σ_j α_kj|Q_ij| + Σ_j |ã_kj| κ + γ_n Σ_j |ã_kj||Q̃_ij| + n·η =: ρ_k`,
+///   `|R_ik| ≤ Â_k Q̂ =: R_k`, `|R̃_ik| ≤ R_k + ρ_k =: R̃_k`,
+///   `|C_kl − C̃_kl| ≤ Σ_i β_li |R_ik| + Σ_i |b̃_li| ρ_k + γ_n Σ_i |b̃_li||R̃_ik| + n·η`.
+#[inline(always)]
+// `k` indexes the basis arrays and the grid together.
+#[allow(clippy::needless_range_loop)]
+fn error_bounds<const D: usize>(a: &Basis, b: &Basis, qmax: &[f64; D]) -> Grid<D> {
+    let (nu, nv) = (a.n, b.n);
+    let q_hat: [f64; D] = std::array::from_fn(|c| up(qmax[c]));
+    let kappa: [f64; D] = std::array::from_fn(|c| up(qmax[c] * EPS));
     let mut err = [[[0.0; D]; MAX_N]; MAX_N];
     for k in 0..nu {
         for c in 0..D {
@@ -364,16 +385,27 @@ fn centred_f64<const D: usize>(
             );
             let r_max = up(a.hat[k] * q_hat[c]);
             let r_tilde = up(r_max + rho);
-            for l in 0..nv {
-                err[k][l][c] = inflate(
+            for (l, e) in err[k].iter_mut().enumerate().take(nv) {
+                e[c] = inflate(
                     b.rad[l] * r_max + b.abs[l] * rho + b.gamma_abs[l] * r_tilde + nv as f64 * ETA,
                 );
             }
         }
     }
-    // Translate by P_ref ≈ s(m), as the generic code does: C' = C^A − P_ref·C^W
-    // (rational) or C'_00 = C_00 − P_ref (polynomial). Error of each new coefficient:
-    // the old ones, |P|·E^W, and the two roundings (each ≤ 2⁻⁵²|result| + η).
+    err
+}
+
+/// Translate by `P_ref ≈ s(m)`, as the generic code does: `C' = C^A − P_ref·C^W`
+/// (rational) or `C'_00 = C_00 − P_ref` (polynomial). Error of each new coefficient:
+/// the old ones, `|P|·E^W`, and the two roundings (each `≤ 2⁻⁵²|result| + η`).
+/// Returns `P_ref`.
+#[inline(always)]
+fn translate<const D: usize>(
+    coef: &mut Grid<D>,
+    err: &mut Grid<D>,
+    nu: usize,
+    nv: usize,
+) -> [f64; 3] {
     let reference: [f64; 3] = std::array::from_fn(|c| {
         let x = if D == 4 {
             coef[0][0][c] / coef[0][0][3]
@@ -411,7 +443,23 @@ fn centred_f64<const D: usize>(
             coef[0][0][c] = t;
         }
     }
-    // |C_kl| ≤ T_kl.
+    reference
+}
+
+/// The jet entries up to `order` over the box and at the centre, from the coefficients
+/// `C̃` and their errors `E`: `∂_u^a ∂_v^b H(m + δ) = Σ_{k≥a, l≥b} k!/(k−a)! l!/(l−b)!
+/// C_kl δ_u^{k−a} δ_v^{l−b}`, midpoint `a!b!·C̃_ab` (exact: `a!b! ∈ {1, 2}`), radius
+/// `a!b!·E_ab` plus the other terms bounded by their magnitudes `|C_kl| ≤ T_kl` over
+/// `|δ_u| ≤ r_u`, `|δ_v| ≤ r_v`. `None` when a bound is not finite.
+#[allow(clippy::type_complexity, clippy::needless_range_loop)]
+#[inline(always)]
+fn jets<const D: usize>(
+    coef: &Grid<D>,
+    err: &Grid<D>,
+    spans: &Spans,
+    order: usize,
+) -> Option<(Vec<[MidRad; D]>, Vec<[MidRad; D]>)> {
+    let (nu, nv) = (spans.a.n, spans.b.n);
     let mut mag = [[[0.0; D]; MAX_N]; MAX_N];
     for k in 0..nu {
         for l in 0..nv {
@@ -420,9 +468,6 @@ fn centred_f64<const D: usize>(
             }
         }
     }
-    // ∂_u^a ∂_v^b H(m + δ) = Σ_{k≥a, l≥b} k!/(k−a)! l!/(l−b)! C_kl δ_u^{k−a} δ_v^{l−b}:
-    // midpoint a!b!·C̃_ab (exact: a!b! ∈ {1, 2}), radius a!b!·E_ab plus the other terms
-    // bounded by their magnitudes over |δ_u| ≤ r_u, |δ_v| ≤ r_v.
     let fu = derivative_factors(spans.r_u, nu);
     let fv = derivative_factors(spans.r_v, nv);
     let len = jet_len(order);
@@ -464,20 +509,22 @@ fn centred_f64<const D: usize>(
         over_box.push(boxed);
         at_centre.push(centre);
     }
-    Some((reference, over_box, at_centre))
+    Some((over_box, at_centre))
 }
 
 #[cfg(test)]
-mod tests {
+pub(super) mod tests {
     use super::*;
     use crate::num::{IntervalLike, MpfrInterval};
-    use crate::surface::nurbs::NurbsSurface;
     use crate::surface::taylor::{centre as generic_centre, taylor_tensor_jet};
-    use crate::surface::Surface;
 
-    /// A rational bicubic patch on one span pair `[0, 1]²` (Bézier knots), net scaled
-    /// by `scale`, with varied weights.
-    fn patch(scale: f64) -> NurbsSurface {
+    /// Bézier knots of degree 3: one span pair `[0, 1]²`.
+    pub(in crate::surface) const KNOTS: [f64; 8] = [0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
+
+    /// The control points (rows ↔ `v`) and weights of a rational bicubic patch on
+    /// [`KNOTS`], net scaled by `scale`, with varied weights.
+    #[allow(clippy::type_complexity)]
+    pub(in crate::surface) fn patch_points(scale: f64) -> (Vec<Vec<[f64; 3]>>, Vec<Vec<f64>>) {
         let points: Vec<Vec<[f64; 3]>> = (0..4)
             .map(|i| {
                 (0..4)
@@ -499,27 +546,38 @@ mod tests {
                     .collect()
             })
             .collect();
-        let knots = vec![0.0, 0.0, 0.0, 0.0, 1.0, 1.0, 1.0, 1.0];
-        NurbsSurface::new([3, 3], knots.clone(), knots, &points, Some(&weights)).unwrap()
+        (points, weights)
     }
 
-    fn source(s: &NurbsSurface, d: usize) -> BasisSource<'_> {
+    /// The net of [`patch_points`], rows flattened in order.
+    fn patch(scale: f64) -> Net {
+        let (points, weights) = patch_points(scale);
+        Net {
+            rows: 4,
+            cols: 4,
+            points: points.concat(),
+            weights: Some(weights.concat()),
+        }
+    }
+
+    fn source() -> BasisSource<'static> {
         BasisSource::BSpline {
-            knots: &s.knots[d],
+            knots: &KNOTS,
             degree: 3,
             span: 3,
         }
     }
 
-    fn fast(s: &NurbsSurface, u: &Interval, v: &Interval) -> Vec<[Interval; 3]> {
-        try_centred_jet(&s.net, source(s, 0), u, source(s, 1), v, 2).expect("fast path")
+    fn fast(net: &Net, u: &Interval, v: &Interval) -> Vec<[Interval; 3]> {
+        try_centred_jet(net, source(), u, source(), v, 2).expect("fast path")
     }
 
-    fn generic(s: &NurbsSurface, u: &Interval, v: &Interval) -> Vec<[Interval; 3]> {
+    /// The generic centred form (what `NurbsSurface::jet` computes for every other type).
+    fn generic<T: Real>(net: &Net, u: &T, v: &T) -> Vec<[T; 3]> {
         let ((cu, du, iu), (cv, dv, iv)) = (generic_centre(u), generic_centre(v));
-        let bu = bspline_jet(&s.knots[0], 3, 3, &cu, 3);
-        let bv = bspline_jet(&s.knots[1], 3, 3, &cv, 3);
-        taylor_tensor_jet(&s.net, &bu, &du, 0, &bv, &dv, 0, 2, iu && iv)
+        let bu = bspline_jet(&KNOTS, 3, 3, &cu, 3);
+        let bv = bspline_jet(&KNOTS, 3, 3, &cv, 3);
+        taylor_tensor_jet(net, &bu, &du, 0, &bv, &dv, 0, 2, iu && iv)
     }
 
     #[test]
@@ -558,25 +616,18 @@ mod tests {
     fn other_number_types_take_the_generic_path() {
         let s = patch(1.0);
         let m = MpfrInterval::from_bounds(0.25, 0.5, 100);
-        assert!(try_centred_jet(&s.net, source(&s, 0), &m, source(&s, 1), &m, 2).is_none());
-        assert!(try_centred_jet(&s.net, source(&s, 0), &0.3, source(&s, 1), &0.3, 2).is_none());
+        assert!(try_centred_jet(&s, source(), &m, source(), &m, 2).is_none());
+        assert!(try_centred_jet(&s, source(), &0.3, source(), &0.3, 2).is_none());
         let unbounded = Interval::ENTIRE;
         let iv = Interval::from_bounds(0.25, 0.5);
-        assert!(try_centred_jet::<Interval>(
-            &s.net,
-            source(&s, 0),
-            &unbounded,
-            source(&s, 1),
-            &iv,
-            2
-        )
-        .is_none());
+        assert!(try_centred_jet::<Interval>(&s, source(), &unbounded, source(), &iv, 2).is_none());
     }
 
     #[test]
     fn huge_and_tiny_nets_are_enclosed() {
         // The fast path answers at 1e±250 and its enclosure contains the 200-bit MPFR
-        // enclosure of the same box (which contains the jet).
+        // enclosure of the same box (which contains the jet; `NurbsSurface::jet` takes
+        // this path: nurbs's tests).
         for scale in [1e-250, 1e-12, 1e250] {
             let s = patch(scale);
             let (bu, bv) = (
@@ -588,8 +639,7 @@ mod tests {
                 MpfrInterval::from_bounds(0.6, 0.6 + 1e-4, 200),
             );
             let f = fast(&s, &bu, &bv);
-            assert_eq!(f, s.jet(&bu, &bv, 2), "the surface takes the fast path");
-            let m = s.jet(&mu, &mv, 2);
+            let m = generic(&s, &mu, &mv);
             for (e, (fe, me)) in f.iter().zip(&m).enumerate() {
                 for c in 0..3 {
                     assert!(

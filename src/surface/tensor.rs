@@ -15,6 +15,8 @@
 //! encloses: every step is an enclosing operation on exact (lifted) data.
 
 use super::basis::BasisJet;
+use super::validate::positive;
+use crate::error::{require_finite_all, GeomError};
 use crate::num::vector::lift;
 use crate::num::Real;
 use std::ops::{Add, Div, Mul, Sub};
@@ -26,6 +28,98 @@ pub(crate) struct Net {
     pub cols: usize,
     pub points: Vec<[f64; 3]>,
     pub weights: Option<Vec<f64>>,
+}
+
+impl Net {
+    /// The control points, row by row.
+    pub fn point_rows(&self) -> Vec<Vec<[f64; 3]>> {
+        self.points.chunks(self.cols).map(<[_]>::to_vec).collect()
+    }
+    /// The weights, row by row, if rational.
+    pub fn weight_rows(&self) -> Option<Vec<Vec<f64>>> {
+        let w = self.weights.as_ref()?;
+        Some(w.chunks(self.cols).map(<[_]>::to_vec).collect())
+    }
+}
+
+/// Check a rectangular net of at least `min_rows × min_cols` finite points and its
+/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`).
+pub(crate) fn validate_net(
+    points: &[Vec<[f64; 3]>],
+    weights: Option<&[Vec<f64>]>,
+    min_rows: usize,
+    min_cols: usize,
+) -> Result<Net, GeomError> {
+    let rows = points.len();
+    if rows < min_rows {
+        return Err(GeomError::CountMismatch {
+            field: "points".into(),
+            expected: format!("at least {min_rows} rows"),
+            found: format!("{rows}"),
+        });
+    }
+    let cols = points[0].len();
+    if cols < min_cols {
+        return Err(GeomError::CountMismatch {
+            field: "points[0]".into(),
+            expected: format!("at least {min_cols} points per row"),
+            found: format!("{cols}"),
+        });
+    }
+    let mut flat = Vec::with_capacity(rows * cols);
+    for (i, r) in points.iter().enumerate() {
+        if r.len() != cols {
+            return Err(GeomError::CountMismatch {
+                field: format!("points[{i}]"),
+                expected: format!("{cols} points (as row 0)"),
+                found: format!("{}", r.len()),
+            });
+        }
+        for (j, p) in r.iter().enumerate() {
+            require_finite_all(&format!("points[{i}][{j}]"), p)?;
+            flat.push(*p);
+        }
+    }
+    let weights = match weights {
+        None => None,
+        Some(w) => {
+            if w.len() != rows {
+                return Err(GeomError::CountMismatch {
+                    field: "weights".into(),
+                    expected: format!("{rows} rows (as points)"),
+                    found: format!("{}", w.len()),
+                });
+            }
+            let mut flat_w = Vec::with_capacity(rows * cols);
+            for (i, r) in w.iter().enumerate() {
+                if r.len() != cols {
+                    return Err(GeomError::CountMismatch {
+                        field: format!("weights[{i}]"),
+                        expected: format!("{cols} weights (as points[{i}])"),
+                        found: format!("{}", r.len()),
+                    });
+                }
+                for (j, &x) in r.iter().enumerate() {
+                    let field = format!("weights[{i}][{j}]");
+                    positive(&field, x).map_err(|e| match e {
+                        GeomError::InvalidValue { field, .. } => GeomError::NonPositiveWeight {
+                            field,
+                            value: format!("{x}"),
+                        },
+                        other => other,
+                    })?;
+                    flat_w.push(x);
+                }
+            }
+            Some(flat_w)
+        }
+    };
+    Ok(Net {
+        rows,
+        cols,
+        points: flat,
+        weights,
+    })
 }
 
 /// `(ku, kv)` derivative orders in jet order `s, s_u, s_v, s_uu, s_uv, s_vv`.

@@ -1,4 +1,4 @@
-//! Torus of OPERATIONS.md §1.6 and spec/CASES.md:
+//! Torus of OPERATIONS.md §1.6 and docs/FORMAT.md:
 //! `center + (R + r cos v)(cos u X + sin u Y) + r sin v Z`.
 //!
 //! Domain: for `r < R` (ring torus) the CASES default `[0, 2π]²`, closed in both

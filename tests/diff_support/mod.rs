@@ -25,14 +25,33 @@ pub fn case_count() -> u32 {
 /// (generator, seed) pairs over every generator, on two threads (CI has two cores).
 /// On failure, panic with the message and the case as a replayable JSON line.
 pub fn run(construction: Construction, check: impl Fn(&Case) -> Result<(), String> + Sync) {
+    run_seeded(
+        &Generator::ALL,
+        |g, seed| format!("{}/{}/{seed}", construction.name(), g.name()),
+        |g, seed| case(construction, g, seed),
+        |c, id| c.json_line(id),
+        check,
+    );
+}
+
+/// [`run`] for any seeded family of cases: proptest draws (family, seed) pairs over
+/// `families`; `draw` builds a case, `id` names it and `json_line` writes it for replay.
+pub fn run_seeded<F: Copy + Sync, C>(
+    families: &[F],
+    id: impl Fn(F, u64) -> String + Sync,
+    draw: impl Fn(F, u64) -> C + Sync,
+    json_line: impl Fn(&C, &str) -> String + Sync,
+    check: impl Fn(&C) -> Result<(), String> + Sync,
+) {
     let total = case_count();
     let halves = [total / 2, total - total / 2];
+    let part = |n: u32| run_part(families, n, &id, &draw, &json_line, &check);
     std::thread::scope(|s| {
         let handles: Vec<_> = halves
             .iter()
             .map(|&n| {
-                let check = &check;
-                s.spawn(move || run_part(construction, n, check))
+                let part = &part;
+                s.spawn(move || part(n))
             })
             .collect();
         let failures: Vec<String> = handles
@@ -47,10 +66,13 @@ pub fn run(construction: Construction, check: impl Fn(&Case) -> Result<(), Strin
     });
 }
 
-fn run_part(
-    construction: Construction,
+fn run_part<F: Copy, C>(
+    families: &[F],
     cases: u32,
-    check: &(impl Fn(&Case) -> Result<(), String> + Sync),
+    id: &impl Fn(F, u64) -> String,
+    draw: &impl Fn(F, u64) -> C,
+    json_line: &impl Fn(&C, &str) -> String,
+    check: &impl Fn(&C) -> Result<(), String>,
 ) -> Result<(), String> {
     let config = Config {
         cases,
@@ -60,13 +82,12 @@ fn run_part(
         ..Config::default()
     };
     let mut runner = TestRunner::new(config);
-    let strategy = (0..Generator::ALL.len(), any::<u64>());
-    let result = runner.run(&strategy, |(g, seed)| {
-        let generator = Generator::ALL[g];
-        let c = case(construction, generator, seed);
+    let strategy = (0..families.len(), any::<u64>());
+    let result = runner.run(&strategy, |(f, seed)| {
+        let family = families[f];
+        let c = draw(family, seed);
         check(&c).map_err(|msg| {
-            let id = format!("{}/{}/{seed}", construction.name(), generator.name());
-            let line = c.json_line(&id);
+            let line = json_line(&c, &id(family, seed));
             eprintln!("{line}");
             TestCaseError::fail(format!("{msg}\nreplay with `geocert solve -`:\n{line}"))
         })
@@ -182,6 +203,7 @@ pub fn kind<T, const D: usize>(r: &Intersection<T, D>) -> &'static str {
         Intersection::Point(_) => "point",
         Intersection::Line { .. } => "line",
         Intersection::Segment { .. } => "segment",
+        Intersection::Ray { .. } => "ray",
         Intersection::Plane(_) => "plane",
     }
 }

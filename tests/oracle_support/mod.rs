@@ -90,6 +90,7 @@ pub fn kind<T, const D: usize>(r: &Intersection<T, D>) -> &'static str {
         Intersection::Point(_) => "point",
         Intersection::Line { .. } => "line",
         Intersection::Segment { .. } => "segment",
+        Intersection::Ray { .. } => "ray",
         Intersection::Plane(_) => "plane",
     }
 }

@@ -217,13 +217,16 @@ impl IntPoly {
     }
 }
 
+/// For the tests: the polynomial `Σ c_i xⁱ` of small integer coefficients.
+#[cfg(test)]
+pub(crate) fn small_poly(c: &[i64]) -> IntPoly {
+    IntPoly::trimmed(c.iter().map(|&x| Integer::from(x)).collect())
+}
+
 #[cfg(test)]
 mod tests {
+    use super::small_poly as ip;
     use super::*;
-
-    fn ip(c: &[i64]) -> IntPoly {
-        IntPoly::trimmed(c.iter().map(|&x| Integer::from(x)).collect())
-    }
 
     #[test]
     fn gcd_and_pseudo_remainders() {

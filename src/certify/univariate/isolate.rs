@@ -137,27 +137,7 @@ pub(crate) fn isolate(
     let stripped: &[Integer] = if zero_root { &p.c[1..] } else { &p.c[..] };
     let reversed: Vec<Integer> = stripped.iter().rev().cloned().collect();
     if let (Some(kh), Some(kl)) = (upper_exponent(stripped), upper_exponent(&reversed)) {
-        let kl = -kl;
-        let mut stack = Vec::new();
-        for sign in [-1, 1] {
-            let (a, b, powers) = if sign > 0 {
-                (Dy::power(1, kl), Dy::power(1, kh), (kl, kh))
-            } else {
-                (Dy::power(-1, kh), Dy::power(-1, kl), (kh, kl))
-            };
-            let va = sturm.variations(a.at());
-            let vb = sturm.variations(b.at());
-            stack.push(Work {
-                a,
-                b,
-                va,
-                vb,
-                a_root: false,
-                b_root: false,
-                count: va.saturating_sub(vb),
-                powers: Some(powers),
-            });
-        }
+        let mut stack = start(sturm, -kl, kh);
         while let Some(w) = stack.pop() {
             if w.count == 0
                 || lo.is_some_and(|l| w.b.rational() <= *l)
@@ -174,43 +154,76 @@ pub(crate) fn isolate(
                 out.push((key, iso));
                 continue;
             }
-            let (m, powers) = split_point(&w);
-            let vm = sturm.variations(m.at());
-            let m_root = p.sign_at(m.at()) == Ordering::Equal;
-            if m_root {
-                let r = m.rational();
-                if in_range(&r) {
-                    out.push((r.clone(), Isolated::Exact(r)));
-                }
+            let (root, left, right) = split(sturm, w);
+            if let Some(r) = root.filter(|r| in_range(r)) {
+                out.push((r.clone(), Isolated::Exact(r)));
             }
-            let left = Work {
-                count: w.va.saturating_sub(vm).saturating_sub(usize::from(m_root)),
-                a: w.a,
-                b: m.clone(),
-                va: w.va,
-                vb: vm,
-                a_root: w.a_root,
-                b_root: m_root,
-                powers: powers.map(|(ka, km, _)| (ka, km)),
-            };
-            let right = Work {
-                count: vm
-                    .saturating_sub(w.vb)
-                    .saturating_sub(usize::from(w.b_root)),
-                a: m,
-                b: w.b,
-                va: vm,
-                vb: w.vb,
-                a_root: m_root,
-                b_root: w.b_root,
-                powers: powers.map(|(_, km, kb)| (km, kb)),
-            };
             stack.push(left);
             stack.push(right);
         }
     }
     out.sort_by(|x, y| x.0.cmp(&y.0));
     out.into_iter().map(|(_, iso)| iso).collect()
+}
+
+/// The two starting intervals, the negative roots' `[−2^kh, −2^kl]` then the positive
+/// roots' `[2^kl, 2^kh]` (`kl`, `kh`: exponents of bounds on the roots' magnitudes, from
+/// [`upper_exponent`]), with their root counts.
+fn start(sturm: &Sturm, kl: i64, kh: i64) -> Vec<Work> {
+    [-1, 1]
+        .into_iter()
+        .map(|sign| {
+            let (a, b, powers) = if sign > 0 {
+                (Dy::power(1, kl), Dy::power(1, kh), (kl, kh))
+            } else {
+                (Dy::power(-1, kh), Dy::power(-1, kl), (kh, kl))
+            };
+            let va = sturm.variations(a.at());
+            let vb = sturm.variations(b.at());
+            Work {
+                a,
+                b,
+                va,
+                vb,
+                a_root: false,
+                b_root: false,
+                count: va.saturating_sub(vb),
+                powers: Some(powers),
+            }
+        })
+        .collect()
+}
+
+/// `w` split at [`split_point`]: the point if it is a root, and the two halves with
+/// their root counts (a root at the point counted in neither).
+fn split(sturm: &Sturm, w: Work) -> (Option<Rational>, Work, Work) {
+    let (m, powers) = split_point(&w);
+    let vm = sturm.variations(m.at());
+    let m_root = sturm.poly().sign_at(m.at()) == Ordering::Equal;
+    let root = m_root.then(|| m.rational());
+    let left = Work {
+        count: w.va.saturating_sub(vm).saturating_sub(usize::from(m_root)),
+        a: w.a,
+        b: m.clone(),
+        va: w.va,
+        vb: vm,
+        a_root: w.a_root,
+        b_root: m_root,
+        powers: powers.map(|(ka, km, _)| (ka, km)),
+    };
+    let right = Work {
+        count: vm
+            .saturating_sub(w.vb)
+            .saturating_sub(usize::from(w.b_root)),
+        a: m,
+        b: w.b,
+        va: vm,
+        vb: w.vb,
+        a_root: m_root,
+        b_root: w.b_root,
+        powers: powers.map(|(_, km, kb)| (km, kb)),
+    };
+    (root, left, right)
 }
 
 /// The split point of an interval, and the exponents of the halves when both stay
@@ -276,12 +289,7 @@ fn finish(sturm: &Sturm, w: Work) -> Isolated {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    fn ip(c: &[i64]) -> IntPoly {
-        IntPoly {
-            c: c.iter().map(|&x| Integer::from(x)).collect(),
-        }
-    }
+    use crate::certify::univariate::int_poly::small_poly as ip;
 
     #[test]
     fn isolates_and_finds_split_point_roots() {

@@ -1,6 +1,6 @@
 //! Exact real roots of univariate polynomials with rational coefficients
-//! (CERTIFICATION.md level `exact`: "for algebraic cases … exact polynomial
-//! discriminants, resultants and Sturm sequences"; singular roots, issue 4 (a)).
+//! (docs/CERTIFICATES.md level `exact`: algebraic cases are decided by exact polynomial
+//! discriminants, resultants and Sturm sequences; singular roots, issue 4 (a)).
 //!
 //! Pipeline, every step exact (`rug::Integer` / `rug::Rational`):
 //!

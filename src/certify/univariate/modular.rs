@@ -100,13 +100,7 @@ pub(crate) fn proves_no_rational_root(f: &IntPoly) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use rug::Integer;
-
-    fn ip(c: &[i64]) -> IntPoly {
-        IntPoly {
-            c: c.iter().map(|&x| Integer::from(x)).collect(),
-        }
-    }
+    use crate::certify::univariate::int_poly::small_poly as ip;
 
     #[test]
     fn tests_prove_only_true_properties() {

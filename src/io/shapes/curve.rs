@@ -1,10 +1,10 @@
-//! Curve objects of spec/CASES.md: `line`, `segment`, `circle`, `ellipse`, `hyperbola`,
+//! Curve objects of docs/FORMAT.md: `line`, `segment`, `circle`, `ellipse`, `hyperbola`,
 //! `parabola`, `helix`, `bezier`, `nurbs_curve` and the 2D `line2`, `segment2`,
 //! `circle2`, `ellipse2`, `bezier2`, `nurbs_curve2`, `conic2`; and, as an extension,
 //! `polyline` / `polyline2` (`points`, optional `params`, OPERATIONS.md §1.5).
 //!
-//! Every curve may carry `domain` (CASES.md "Any curve or surface may carry `domain`");
-//! `range` and `domain` are the same field where CASES.md writes `range`. A circle or
+//! Every curve may carry `domain` (docs/FORMAT.md "Domains");
+//! `range` and `domain` are the same field where docs/FORMAT.md writes `range`. A circle or
 //! ellipse with a `domain` is an arc (§1.5 circular and elliptic arcs). Rational
 //! Bézier curves and conic arcs are `bezier` with `weights`.
 
@@ -147,7 +147,7 @@ impl Curve3Spec {
     }
 }
 
-/// Write a field under the name CASES.md uses for this type.
+/// Write a field under the name docs/FORMAT.md uses for this type.
 fn rename_key(mut v: Value, from: &str, to: &str) -> Value {
     if let Some(map) = v.as_object_mut() {
         if let Some(x) = map.remove(from) {
@@ -248,7 +248,7 @@ pub fn parse_curve3(mut value: Value, field: &str) -> Result<Curve3Spec, GeomErr
         "line" => Curve3Spec::Line(parse_fields(value, field)?),
         "segment" => Curve3Spec::Segment(parse_fields(value, field)?),
         "circle" | "ellipse" | "hyperbola" | "parabola" | "helix" => {
-            // One struct holds the framed curves; each type takes only its CASES.md names.
+            // One struct holds the framed curves; each type takes only its docs/FORMAT.md names.
             let forbidden: &[(&str, &str)] = match type_name.as_str() {
                 "parabola" => &[("center", "vertex")],
                 "circle" | "ellipse" => &[("vertex", "center"), ("range", "domain")],

@@ -1,4 +1,4 @@
-//! The fields of each curve type of spec/CASES.md, as written (serde structs that
+//! The fields of each curve type of docs/FORMAT.md, as written (serde structs that
 //! refuse unknown fields), and the checks that depend on the type (the framed curves
 //! share one struct; each type takes only its own fields).
 
@@ -29,7 +29,7 @@ pub struct SegmentSpec<P> {
     pub domain: Option<[f64; 2]>,
 }
 
-/// The frame fields of a framed analytic curve (CASES.md "Frames").
+/// The frame fields of a framed analytic curve (docs/FORMAT.md "Frames").
 #[derive(Debug, Clone, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct AnalyticSpec {

@@ -1,4 +1,4 @@
-//! Curved objects of the case format (spec/CASES.md "Objects"): specs as written,
+//! Curved objects of the case format (docs/FORMAT.md "Objects"): specs as written,
 //! parsed from JSON values with typed errors naming the field path, validated by
 //! building the geometric object, and written back to JSON so that a spec survives a
 //! round trip bit for bit (doubles print in shortest round-trip form).

@@ -1,4 +1,4 @@
-//! Surfaces of the case format (spec/CASES.md "Objects"), as written, and their
+//! Surfaces of the case format (docs/FORMAT.md "Objects"), as written, and their
 //! validation into [`AnySurface`].
 //!
 //! [`parse_surface`] reads the shape of one object (unknown fields are errors, every
@@ -8,7 +8,7 @@
 //! numbers (exact doubles; strings are refused for curved objects, and JSON cannot hold
 //! NaN or infinities). Specs serialize back to the same JSON (round trip).
 //!
-//! Extensions of CASES.md (extend, never break): `elliptic_cylinder` (`a`, `b` instead
+//! Extensions of the case format (docs/FORMAT.md; extend, never break): `elliptic_cylinder` (`a`, `b` instead
 //! of `radius`) and `hyperbolic_paraboloid` (`center + a u X + b v Y + (u² − v²) Z`,
 //! `domain` required). `revolution`, `extrusion`, `ruled` (they need the curve reader)
 //! and `quadric` are read elsewhere; a `plane` given by `normal` and `d` has no

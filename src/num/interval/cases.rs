@@ -3,7 +3,11 @@
 //! (extrema of sin and cos, poles of tan), and which corners or constants bound
 //! `atan2` over a box. Written once, evaluated in either number type.
 
+use rug::float::Constant;
+use rug::{Float, Integer};
 use std::cmp::Ordering;
+
+use super::mpfr_eval::{rd, ru};
 
 /// Which integers `m` with `m·π/2 ∈ [a, b]` may exist, as a bitmask over `m mod 4`
 /// (bit `j` set: some such `m ≡ j (mod 4)` may exist).
@@ -123,6 +127,58 @@ pub(crate) fn atan2_plan(c: Ordering, d: Ordering, a: Ordering, b: Ordering) -> 
         Pi
     };
     range(lo, Pi)
+}
+
+/// Where a finite number lies relative to the multiples of π/2: `x = k·π/2 + r`.
+pub(crate) struct HalfPiReduction {
+    /// `k`, the integer nearest to `x/(π/2)` (as computed; any integer with `|r| < π/2`
+    /// keeps the analysis valid).
+    pub k: Integer,
+    /// `k mod 4` in `0..4`.
+    pub k_mod4: u32,
+    /// An enclosure of `r` allows `r ≤ 0`.
+    pub r_may_be_le0: bool,
+    /// An enclosure of `r` allows `r ≥ 0`.
+    pub r_may_be_ge0: bool,
+}
+
+/// Reduce a finite `x` modulo π/2, rigorously: with `[h↓, h↑] ∋ π/2` at working
+/// precision `w = max(e, 0) + 2p + 64` (`e` the exponent, `p` the precision of `x`),
+/// `k = round(x / h↓)` and `r ∈ [x − k·h↑, x − k·h↓]` (for `k ≥ 0`; swapped for
+/// `k < 0`), each operation rounded outward. `|x/(π/2) − k| ≤ 1/2 + 2^-w·|k|`, so
+/// `|r| < π/2` as [`crate::num::interval`] `cases::half_pi_multiples` requires. The
+/// sign of `r` is undecided only if `x` lies within about `2^(e−w)` of `k·π/2`.
+pub(crate) fn reduce_half_pi_mpfr(x: &Float) -> HalfPiReduction {
+    if x.is_zero() {
+        return HalfPiReduction {
+            k: Integer::new(),
+            k_mod4: 0,
+            r_may_be_le0: true,
+            r_may_be_ge0: true,
+        };
+    }
+    let e = x.get_exp().unwrap_or(0).max(0) as u32;
+    let w = e + 2 * x.prec() + 64;
+    let mut h_lo = rd(w, Constant::Pi);
+    let mut h_hi = ru(w, Constant::Pi);
+    h_lo /= 2u32;
+    h_hi /= 2u32;
+    let q = Float::with_val(w, x / &h_lo);
+    let k = q.to_integer().unwrap_or_default();
+    let kf = Float::with_val(k.significant_bits().max(2), &k);
+    let (for_lo, for_hi) = if k >= 0 {
+        (&h_hi, &h_lo)
+    } else {
+        (&h_lo, &h_hi)
+    };
+    let r_lo = rd(w, x - &ru(w, &kf * for_lo));
+    let r_hi = ru(w, x - &rd(w, &kf * for_hi));
+    HalfPiReduction {
+        k_mod4: k.mod_u(4),
+        k,
+        r_may_be_le0: r_lo <= 0,
+        r_may_be_ge0: r_hi >= 0,
+    }
 }
 
 #[cfg(test)]

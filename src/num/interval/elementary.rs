@@ -16,15 +16,14 @@ use rug::Float;
 use std::cmp::Ordering;
 
 use super::cases::{
-    atan2_plan, half_pi_multiples, Atan2Bound, Atan2Plan, COS_MAX, COS_MIN, SIN_MAX, SIN_MIN,
-    TAN_POLE,
+    atan2_plan, half_pi_multiples, reduce_half_pi_mpfr, Atan2Bound, Atan2Plan, COS_MAX, COS_MIN,
+    SIN_MAX, SIN_MIN, TAN_POLE,
 };
 use super::mpfr_eval::{atan2_f64, eval_f64, HALF_PI_DOWN, HALF_PI_UP, PI_DOWN, PI_UP};
 use super::taylor::{
     exp_point, reduce_half_pi, sin_cos_reduced, tan_reduced, EXP_FAST_MAX, TRIG_FAST_MAX,
 };
 use super::Interval;
-use crate::num::mpfr_interval::reduce_half_pi_mpfr;
 
 /// A bound of `f` at `x` in direction `round`, by MPFR.
 type MpfrFn = fn(&mut Float, Round) -> Ordering;

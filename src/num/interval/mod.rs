@@ -1,4 +1,4 @@
-//! f64 intervals with outward rounding (ARCHITECTURE.md "Numbers", CERTIFICATION.md
+//! f64 intervals with outward rounding (ARCHITECTURE.md "Numbers", docs/CERTIFICATES.md
 //! "Escalation": the f64 interval stage).
 //!
 //! An [`Interval`] is a closed, connected set of reals `[lo, hi]` with double bounds
@@ -36,7 +36,7 @@ mod arith;
 mod cases;
 pub mod directed;
 mod elementary;
-mod mpfr_eval;
+pub(crate) mod mpfr_eval;
 pub(crate) mod ops;
 mod powi;
 mod real_impl;
@@ -47,8 +47,8 @@ pub(crate) mod test_support;
 
 pub(crate) use arith::Sign;
 pub(crate) use cases::{
-    atan2_plan, half_pi_multiples, Atan2Bound, Atan2Plan, COS_MAX, COS_MIN, SIN_MAX, SIN_MIN,
-    TAN_POLE,
+    atan2_plan, half_pi_multiples, reduce_half_pi_mpfr, Atan2Bound, Atan2Plan, COS_MAX, COS_MIN,
+    SIN_MAX, SIN_MIN, TAN_POLE,
 };
 
 use rug::float::Round;

@@ -60,6 +60,24 @@ impl AssignExact for Float {
     }
 }
 
+/// `v` rounded down at `prec` bits.
+#[inline]
+pub(crate) fn rd<T>(prec: u32, v: T) -> Float
+where
+    Float: rug::ops::AssignRound<T, Round = Round, Ordering = std::cmp::Ordering>,
+{
+    Float::with_val_round(prec, v, Round::Down).0
+}
+
+/// `v` rounded up at `prec` bits.
+#[inline]
+pub(crate) fn ru<T>(prec: u32, v: T) -> Float
+where
+    Float: rug::ops::AssignRound<T, Round = Round, Ordering = std::cmp::Ordering>,
+{
+    Float::with_val_round(prec, v, Round::Up).0
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;

@@ -33,6 +33,18 @@ impl Real for Interval {
     fn hull_with(&self, other: &Self) -> Self {
         self.hull(other)
     }
+    /// `[lo, hi]` as stored (exact).
+    fn as_f64_interval(&self) -> Option<[f64; 2]> {
+        Some([self.lo(), self.hi()])
+    }
+    /// The interval `[lo, hi]` itself (exact; `lo > hi` is the empty set).
+    fn from_f64_interval([lo, hi]: [f64; 2], _args: &[&Self]) -> Option<Self> {
+        Some(if lo > hi {
+            Interval::EMPTY
+        } else {
+            Interval::from_bounds(lo, hi)
+        })
+    }
     /// Exact: the bounds are doubles, so the intersection needs no rounding.
     fn restrict_to(&self, lo: f64, hi: f64) -> Self {
         if lo > hi || lo.is_nan() || hi.is_nan() {

@@ -77,3 +77,15 @@ pub(crate) fn is_rounded_down(r: f64, x: &Rational) -> bool {
 pub(crate) fn encloses(lo: f64, hi: f64, v: &Float) -> bool {
     *v >= lo && *v <= hi
 }
+
+/// A random interval: two random doubles (`Rng::double`) as bounds; a point in 30% of
+/// the draws.
+pub(crate) fn random_interval(rng: &mut Rng, emin: i32, emax: i32) -> super::Interval {
+    let a = rng.double(emin, emax);
+    let b = if rng.unit() < 0.3 {
+        a
+    } else {
+        rng.double(emin, emax)
+    };
+    super::Interval::from_bounds(a.min(b), a.max(b))
+}

@@ -1,5 +1,5 @@
 //! Intervals over `rug::Float` (MPFR) at any precision (ARCHITECTURE.md "Numbers",
-//! CERTIFICATION.md "Escalation": 128, 256, 512, … bits).
+//! docs/CERTIFICATES.md "Escalation": 128, 256, 512, … bits).
 //!
 //! An [`MpfrInterval`] is `[lo, hi]` with both bounds MPFR numbers of one precision `p`,
 //! with the same IEEE 1788 set semantics as [`crate::num::Interval`] (dropped domain
@@ -27,7 +27,7 @@ mod elementary;
 mod real_impl;
 mod set_ops;
 
-pub(crate) use elementary::reduce_half_pi_mpfr;
+pub(crate) use crate::num::interval::mpfr_eval::{rd, ru};
 
 use rug::float::Round;
 use rug::ops::AssignRound;
@@ -53,24 +53,6 @@ pub struct MpfrInterval {
 #[inline]
 pub(crate) fn clamp_prec(prec: u32) -> u32 {
     prec.clamp(2.max(rug::float::prec_min()), rug::float::prec_max())
-}
-
-/// `v` rounded down at `prec` bits.
-#[inline]
-pub(crate) fn rd<T>(prec: u32, v: T) -> Float
-where
-    Float: rug::ops::AssignRound<T, Round = Round, Ordering = std::cmp::Ordering>,
-{
-    Float::with_val_round(prec, v, Round::Down).0
-}
-
-/// `v` rounded up at `prec` bits.
-#[inline]
-pub(crate) fn ru<T>(prec: u32, v: T) -> Float
-where
-    Float: rug::ops::AssignRound<T, Round = Round, Ordering = std::cmp::Ordering>,
-{
-    Float::with_val_round(prec, v, Round::Up).0
 }
 
 impl MpfrInterval {

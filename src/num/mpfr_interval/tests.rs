@@ -2,7 +2,7 @@
 //! tightness against exact rationals, conversions to and from f64 intervals.
 
 use super::*;
-use crate::num::interval::test_support::Rng;
+use crate::num::interval::test_support::{random_interval, Rng};
 use crate::num::{Arith, IntervalLike};
 use rug::float::Constant;
 use rug::ops::Pow;
@@ -183,4 +183,28 @@ fn set_operations_and_emptiness() {
         MpfrInterval::new("x", 3.0, 1.0, p).unwrap_err().kind(),
         "empty_domain"
     );
+}
+
+/// The f64 interval's `powi` is within `2|n| + 2` ulps of the tightest result, MPFR's at
+/// 53 bits (tightest by design), and contains it.
+#[test]
+fn f64_interval_powi_is_within_2n_ulps_of_the_tightest() {
+    let mut rng = Rng::new(6);
+    for _ in 0..2000 {
+        let x = random_interval(&mut rng, -30, 30);
+        for n in [-5, -4, -3, -2, -1, 0, 1, 2, 3, 4, 5, 7, 12] {
+            let y = x.powi(n);
+            let t = MpfrInterval::from_interval(&x, 53).powi(n).to_interval();
+            assert!(t.is_subset(&y));
+            if y.is_bounded() && t.is_bounded() && t.lo() != 0.0 {
+                let ulps =
+                    |u: f64, v: f64| (u.to_bits() as i64 - v.to_bits() as i64).unsigned_abs();
+                let k = 2 * n.unsigned_abs() as u64 + 2;
+                assert!(
+                    ulps(y.lo().abs(), t.lo().abs()) <= k && ulps(y.hi().abs(), t.hi().abs()) <= k,
+                    "{x:?}^{n}: {y:?} vs tightest {t:?}"
+                );
+            }
+        }
+    }
 }

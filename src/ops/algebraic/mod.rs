@@ -1,5 +1,5 @@
 //! Intersections decided exactly where the problem is algebraic (issue 6;
-//! CERTIFICATION.md level `exact`): a line against a quadric or a torus (OPERATIONS.md
+//! docs/CERTIFICATES.md level `exact`): a line against a quadric or a torus (OPERATIONS.md
 //! §5.2 with §1.6–§1.7), a line against a conic and conic against conic in the plane
 //! (§6.3–§6.4), through polynomials of degree ≤ 4 with rational coefficients solved by
 //! [`crate::certify::univariate`].
@@ -21,7 +21,9 @@ mod exact;
 mod line;
 mod line_surface;
 pub(crate) mod pairs;
+mod params;
 mod quadric;
+mod rounding;
 
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
 pub use line::{LineCut, LineHit};

@@ -1,4 +1,4 @@
-//! The algebraic pairs of the front door, decided exactly (CERTIFICATION.md `exact`):
+//! The algebraic pairs of the front door, decided exactly (docs/CERTIFICATES.md `exact`):
 //! a line or segment against a whole sphere, ellipsoid (any frame) or ring torus
 //! (OPERATIONS.md §5.2 with §1.6), and in the plane a 2D line or segment or a conic
 //! against a whole `circle2`, `ellipse2` or a `conic2` (§6.3–§6.4). Shapes whose implicit
@@ -14,9 +14,11 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
+use super::params::{line_hit_params, ClosedFrame, Ellipse2, Param};
+use super::rounding::PRECISION_CAP;
 use super::{intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact};
-use super::{ConicCut, LineCut, LineHit, QuadricForm, TorusData};
-use crate::certificate::Certified;
+use super::{ConicCut, ConicHit, LineCut, LineHit, QuadricForm, TorusData};
+use crate::certificate::{Certified, Status};
 use crate::certify::univariate::RealRoot;
 use crate::curve::analytic::Shape as CurveShape;
 use crate::curve::{AnyCurve2, Curve};
@@ -217,7 +219,6 @@ fn exact_point<const D: usize>(
     let t = t.exact()?;
     let xyz = (0..D)
         .map(|i| &line.o[i] + Rational::from(&line.d[i] * t))
-        .map(Rational::from)
         .collect();
     let params = if line_first {
         vec![vec![t.clone()], vec![]]
@@ -287,7 +288,7 @@ fn contained<const D: usize>(line: &ExactLine<D>, line_first: bool) -> Answer {
 fn line_cut_answer<const D: usize>(
     line: &ExactLine<D>,
     mut cut: Certified<LineCut<D>>,
-    other_params: impl Fn(&[Interval; D]) -> Vec<(f64, [f64; 2])>,
+    other_params: impl Fn(&LineHit<D>, &[Interval; D]) -> Rounding,
     line_first: bool,
 ) -> Certified<Answer> {
     if matches!(cut.value, LineCut::Contained) {
@@ -296,6 +297,7 @@ fn line_cut_answer<const D: usize>(
     if let LineCut::Points(hits) = &mut cut.value {
         hits.retain(|h| in_range(&h.t, &line.range));
     }
+    let mut all_rounded = true;
     let points: Vec<Point> = cut
         .value
         .points()
@@ -304,7 +306,8 @@ fn line_cut_answer<const D: usize>(
             let b = point_box(h);
             let t = h.t.rounded();
             let line_params = (vec![t.nearest], vec![[t.lo, t.hi]]);
-            let other = other_params(&b);
+            let (other, rounded) = other_params(h, &b);
+            all_rounded &= rounded;
             let other_params = (
                 other.iter().map(|p| p.0).collect::<Vec<_>>(),
                 other.iter().map(|p| p.1).collect::<Vec<_>>(),
@@ -326,7 +329,24 @@ fn line_cut_answer<const D: usize>(
             }
         })
         .collect();
-    cut.clone_with(Answer::from_points(points))
+    let mut r = cut.clone_with(Answer::from_points(points));
+    if !all_rounded {
+        not_correctly_rounded(&mut r);
+    }
+    r
+}
+
+/// Parameters of a hit, and whether they are correctly rounded (else their boxes still
+/// hold the exact values, from interval inverses).
+type Rounding = (Vec<Param>, bool);
+
+/// An exact answer with a parameter that Ziv's loop could not round within its cap:
+/// every number is still enclosed, but `exact` promises correct rounding.
+fn not_correctly_rounded(r: &mut Certified<Answer>) {
+    r.status = r.status.weakest(Status::Verified);
+    r.reason = Some(format!(
+        "a parameter could not be correctly rounded within {PRECISION_CAP} bits; its box holds the exact value"
+    ));
 }
 
 /// A line or segment against a whole sphere, ellipsoid or ring torus; `None` when the
@@ -342,24 +362,56 @@ pub(crate) fn line_surface(
         Closed::Quadric(q, _, _) => intersect_line_quadric_exact(&line.o, &line.d, q),
         Closed::Torus(t, _, _) => intersect_line_torus_exact(&line.o, &line.d, t),
     };
-    Some(line_cut_answer(
-        &line,
-        cut,
-        |b| surface_params(&shape, b),
-        line_first,
-    ))
+    let frame = match &shape {
+        Closed::Quadric(_, f, r) => ClosedFrame {
+            frame: f,
+            scale: *r,
+            major: None,
+        },
+        Closed::Torus(_, f, major) => ClosedFrame {
+            frame: f,
+            scale: [1.0; 3],
+            major: Some(*major),
+        },
+    };
+    let params =
+        |h: &LineHit<3>, b: &[Interval; 3]| match line_hit_params(&frame, &line.o, &line.d, &h.t) {
+            Some(p) => (p, true),
+            None => (surface_params(&shape, b), false),
+        };
+    Some(line_cut_answer(&line, cut, params, line_first))
 }
 
 /// A plane conic with the inverse of its parametrisation (`None`: implicit).
 struct PlaneConic {
     form: QuadricForm<2>,
     /// Centre and semi-axes of `circle2` / `ellipse2`: `t = atan2((y−c_y)/b, (x−c_x)/a)`.
-    param: Option<([f64; 2], [f64; 2])>,
+    param: Option<Ellipse2>,
 }
 
 impl PlaneConic {
+    /// The parameter of a hit of a line, correctly rounded where it can be.
+    fn line_hit(&self, line: &ExactLine<2>, h: &LineHit<2>, b: &[Interval; 2]) -> Rounding {
+        match self.param.map(|e| e.line_hit(&line.o, &line.d, &h.t)) {
+            None => (vec![], true),
+            Some(Some(t)) => (vec![t], true),
+            Some(None) => (self.params(b), false),
+        }
+    }
+
+    /// The parameter of a point with algebraic coordinates, correctly rounded where it
+    /// can be.
+    fn point(&self, h: &ConicHit, b: &[Interval; 2]) -> Rounding {
+        match self.param.map(|e| e.point(&h.x, &h.y)) {
+            None => (vec![], true),
+            Some(Some(t)) => (vec![t], true),
+            Some(None) => (self.params(b), false),
+        }
+    }
+
+    /// Interval inverses of the parametrisation over a box (not correctly rounded).
     fn params(&self, p: &[Interval; 2]) -> Vec<(f64, [f64; 2])> {
-        let Some((c, r)) = self.param else {
+        let Some(Ellipse2 { center: c, axes: r }) = self.param else {
             return Vec::new();
         };
         let local: [Interval; 2] =
@@ -383,7 +435,10 @@ fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
             };
             Some(PlaneConic {
                 form,
-                param: Some((c.center(), axes)),
+                param: Some(Ellipse2 {
+                    center: c.center(),
+                    axes,
+                }),
             })
         }
         Shape::Conic2(c) => Some(PlaneConic {
@@ -399,17 +454,20 @@ fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
 pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
     if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
         let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
-        return Some(Ok(line_cut_answer(&line, cut, |p| conic.params(p), true)));
+        let params = |h: &LineHit<2>, b: &[Interval; 2]| conic.line_hit(&line, h, b);
+        return Some(Ok(line_cut_answer(&line, cut, params, true)));
     }
     if let (Some(conic), Some(line)) = (plane_conic(a), line2(b)) {
         let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
-        return Some(Ok(line_cut_answer(&line, cut, |p| conic.params(p), false)));
+        let params = |h: &LineHit<2>, b: &[Interval; 2]| conic.line_hit(&line, h, b);
+        return Some(Ok(line_cut_answer(&line, cut, params, false)));
     }
     let (ca, cb) = (plane_conic(a)?, plane_conic(b)?);
     Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_answer(&ca, &cb, cut)))
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {
+    let mut all_rounded = true;
     let value = match &cut.value {
         ConicCut::Coincident => Answer::Coincident,
         ConicCut::CommonComponent => Answer::CommonComponent,
@@ -419,7 +477,8 @@ fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Ce
                     let pt: [Interval; 2] = std::array::from_fn(|i| {
                         Interval::from_bounds(h.point[i].lo, h.point[i].hi)
                     });
-                    let (pa, pb) = (a.params(&pt), b.params(&pt));
+                    let ((pa, ra), (pb, rb)) = (a.point(h, &pt), b.point(h, &pt));
+                    all_rounded &= ra && rb;
                     Point {
                         xyz: h.nearest().to_vec(),
                         xyz_box: pt.iter().map(|x| [x.lo(), x.hi()]).collect(),
@@ -439,5 +498,9 @@ fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Ce
                 .collect(),
         ),
     };
-    cut.clone_with(value)
+    let mut r = cut.clone_with(value);
+    if !all_rounded {
+        not_correctly_rounded(&mut r);
+    }
+    r
 }

@@ -246,7 +246,7 @@ impl QuadricForm<3> {
         framed(&origin, &frame, diagonal(w, zero(), Rational::from(-1)))
     }
 
-    /// Ellipsoid `x²/a² + y²/b² + z²/c² = 1` in the CASES.md frame of `axis` and `ref`
+    /// Ellipsoid `x²/a² + y²/b² + z²/c² = 1` in the docs/FORMAT.md frame of `axis` and `ref`
     /// at `origin`, for any axis (§1.6). The frame's unit vectors are irrational in
     /// general, but only their outer products divided by their squared lengths enter
     /// the form: with the unnormalised `X̃ = ref − (ref·Z̃/|Z̃|²) Z̃`, `Ỹ = Z̃ × X̃`, `Z̃ = axis`,

@@ -1,4 +1,4 @@
-//! Certification of the curved operations (spec/CERTIFICATION.md): each operation's
+//! Certification of the curved operations (docs/CERTIFICATES.md): each operation's
 //! system, written once generic over [`crate::num::Real`] beside its float path, is
 //! handed to [`crate::certify`]:
 //!

@@ -5,7 +5,7 @@
 ///
 /// Both are relative: lengths use `eps·L` and `delta·L` for the problem's length scale
 /// `L`; parameters use `eps·range`. They steer the float path only — a certificate
-/// decides the exact input and never depends on them (CERTIFICATION.md).
+/// decides the exact input and never depends on them (docs/CERTIFICATES.md).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Precision {
     /// ε: Newton stops when every increment is below `eps` times the coordinate's scale.

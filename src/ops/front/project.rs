@@ -9,7 +9,7 @@ use crate::ops::options::ProjectOptions;
 use crate::ops::shape::{Position, Shape};
 
 /// The projections of `point` onto `onto`: every foot of a perpendicular (points where
-/// the distance is stationary, CASES.md "Projections"), or with `nearest` the nearest
+/// the distance is stationary, docs/FORMAT.md "Projections"), or with `nearest` the nearest
 /// point of the closed domain, or with `direction` the hits of the ray (§3.5).
 pub fn project(
     point: &Position,

@@ -149,7 +149,8 @@ impl Kernel for f64 {
 }
 
 /// Rounds exact results and records the largest bit length seen (the `bits` of a
-/// rational answer: CERTIFICATION.md, "the bit length of the largest exact number").
+/// rational answer: docs/CERTIFICATES.md "Escalation", the bit length of the largest
+/// numerator or denominator).
 struct ExactRounder {
     keep: bool,
     bits: Cell<u32>,

@@ -160,7 +160,7 @@ impl<C: Curve<D>, const D: usize> System for CurveFootSystem<'_, C, D> {
     }
 }
 
-/// All feet from `p` onto `curve` (§3.2), certified (spec/CERTIFICATION.md): each foot
+/// All feet from `p` onto `curve` (§3.2), certified (docs/CERTIFICATES.md): each foot
 /// a root of (3.2) in a verified box (`verified_singular` where `p` lies on the
 /// evolute), `complete` when subdivision covered the domain. The float answers (from
 /// `samples`) are certified individually when the search is incomplete.

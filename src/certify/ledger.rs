@@ -1,0 +1,213 @@
+//! What one call of [`super::solve`] has proven so far (CERTIFICATION.md "verified",
+//! "verified_singular", "Completeness"): the roots, the boxes proven root-free, the boxes
+//! left undecided, the box budget and the highest precision that decided anything —
+//! written to by the subdivision and the cluster tests, turned into the result at the end.
+//!
+//! Roots found twice (a root near a bisection plane is seen from both sides, a cluster's
+//! root may also be found by a neighbour) are merged by the uniqueness regions of their
+//! Krawczyk proofs: a root unique in `X` whose twin's enclosure lies in `X` is that twin.
+
+use super::boxes;
+use super::deflate::DoubleRoot;
+use super::krawczyk::VerifiedRoot;
+use super::level::{box_to_f64, box_to_mpfr, levels, CertInterval};
+use super::{Options, Root, Solutions, UndecidedBox};
+use crate::certificate::{Arithmetic, Certified, Status};
+use crate::num::MpfrInterval;
+
+/// What one call of [`super::solve`] has proven so far (module doc).
+#[derive(Debug)]
+pub struct Ledger {
+    /// The caller's narrowest split width.
+    pub min_width: f64,
+    /// The precisions of the escalation, lowest first ([`levels`]).
+    pub(super) levels: Vec<u32>,
+    budget: usize,
+    used: usize,
+    found: Vec<Found>,
+    undecided: Vec<UndecidedBox>,
+    excluded_volume: f64,
+    bits: u32,
+}
+
+/// A proven root (or singular box), stored exactly as MPFR intervals.
+#[derive(Debug, Clone)]
+struct Found {
+    enclosure: Vec<MpfrInterval>,
+    /// Boxes in which this root is the only one (none for a singular box).
+    regions: Vec<Vec<MpfrInterval>>,
+    estimate: Vec<f64>,
+    status: Status,
+    bits: u32,
+    perturbation: Option<f64>,
+}
+
+impl Found {
+    fn is_same_as(&self, other: &Found) -> bool {
+        let inside = |e: &[MpfrInterval], regions: &[Vec<MpfrInterval>]| {
+            regions.iter().any(|r| boxes::is_subset(e, r))
+        };
+        inside(&self.enclosure, &other.regions) || inside(&other.enclosure, &self.regions)
+    }
+
+    fn to_root(&self) -> Root {
+        Root {
+            enclosure: box_to_f64(&self.enclosure),
+            enclosure_mpfr: self.enclosure.clone(),
+            estimate: self.estimate.clone(),
+            status: self.status,
+            bits: self.bits,
+            perturbation: self.perturbation,
+            max_roots: if self.status == Status::Verified {
+                1
+            } else {
+                2
+            },
+        }
+    }
+}
+
+impl Ledger {
+    pub(super) fn new(opts: &Options) -> Self {
+        Ledger {
+            min_width: opts.min_width,
+            levels: levels(opts.max_bits),
+            budget: opts.max_boxes,
+            used: 0,
+            found: Vec::new(),
+            undecided: Vec::new(),
+            excluded_volume: 0.0,
+            bits: 53,
+        }
+    }
+
+    /// Count one box against the budget; false once it is spent.
+    pub fn take_box(&mut self) -> bool {
+        self.take(1)
+    }
+
+    pub(super) fn take(&mut self, k: usize) -> bool {
+        if self.used + k > self.budget {
+            return false;
+        }
+        self.used += k;
+        true
+    }
+
+    /// Record an undecided box (outward in doubles) and why.
+    pub fn undecided<I: CertInterval>(&mut self, x: &[I], reason: &str) {
+        self.undecided.push(UndecidedBox {
+            enclosure: box_to_f64(x),
+            reason: reason.to_string(),
+        });
+    }
+
+    /// Record that a part of the domain of volume `vol` holds no root.
+    pub fn exclude(&mut self, vol: f64, bits: u32) {
+        self.excluded_volume += vol;
+        self.bits = self.bits.max(bits);
+    }
+
+    /// Record a verified root, merging it with an earlier proof of the same root.
+    pub fn root<I: CertInterval>(&mut self, v: VerifiedRoot<I>, bits: u32) {
+        let enclosure = box_to_mpfr(&v.enclosure);
+        let f = Found {
+            estimate: boxes::midpoint_f64(&enclosure),
+            enclosure,
+            regions: vec![box_to_mpfr(&v.region)],
+            status: Status::Verified,
+            bits,
+            perturbation: None,
+        };
+        self.bits = self.bits.max(bits);
+        for i in 0..self.found.len() {
+            let e = &mut self.found[i];
+            if e.status != Status::Verified {
+                continue;
+            }
+            if e.is_same_as(&f) {
+                if let Some(both) = boxes::intersection(&e.enclosure, &f.enclosure) {
+                    e.estimate = boxes::midpoint_f64(&both);
+                    e.enclosure = both;
+                }
+                e.regions.extend(f.regions);
+                e.bits = e.bits.min(f.bits);
+                return;
+            }
+            if boxes::meets(&e.enclosure, &f.enclosure) {
+                // neither proof covers the other's root: one root or two, undecided
+                let e = self.found.remove(i);
+                let hull = boxes::hull(&e.enclosure, &f.enclosure);
+                self.undecided(
+                    &hull,
+                    "two proven roots could not be told apart or identified",
+                );
+                return;
+            }
+        }
+        self.found.push(f);
+    }
+
+    /// Record a `verified_singular` box.
+    pub fn singular<I: CertInterval>(&mut self, enclosure: &[I], d: &DoubleRoot<I>, bits: u32) {
+        self.bits = self.bits.max(bits);
+        self.found.push(Found {
+            enclosure: box_to_mpfr(enclosure),
+            regions: Vec::new(),
+            estimate: boxes::midpoint_f64(&d.x),
+            status: Status::VerifiedSingular,
+            bits,
+            perturbation: Some(d.perturbation()),
+        });
+    }
+
+    /// The result of a finished run over the domain `dom`: the roots found inside it,
+    /// those straddling its boundary, and the certificate (`complete` exactly when
+    /// nothing is undecided; the status the weakest of the roots').
+    pub(super) fn finish(self, dom: &[MpfrInterval]) -> Certified<Solutions> {
+        let mut roots = Vec::new();
+        let mut boundary_roots = Vec::new();
+        for f in &self.found {
+            if boxes::is_subset(&f.enclosure, dom) {
+                roots.push(f.to_root());
+            } else if boxes::meets(&f.enclosure, dom) {
+                boundary_roots.push(f.to_root());
+            }
+        }
+        let status = roots
+            .iter()
+            .chain(&boundary_roots)
+            .fold(Status::Verified, |s, r| s.weakest(r.status));
+        let perturbation = roots
+            .iter()
+            .chain(&boundary_roots)
+            .filter_map(|r| r.perturbation)
+            .reduce(f64::max);
+        let complete = self.undecided.is_empty();
+        let reason = self.undecided.first().map(|u| {
+            format!(
+                "{} undecided box(es); first: {}",
+                self.undecided.len(),
+                u.reason
+            )
+        });
+        let bits = self.bits;
+        let value = Solutions {
+            roots,
+            boundary_roots,
+            undecided: self.undecided,
+            excluded_volume: self.excluded_volume,
+            domain_volume: boxes::volume(dom),
+            boxes: self.used,
+        };
+        Certified {
+            value,
+            status,
+            complete,
+            arithmetic: Arithmetic::of_interval_bits(bits),
+            bits,
+            reason,
+            perturbation,
+        }
+    }
+}
