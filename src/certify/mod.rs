@@ -40,6 +40,7 @@ pub mod cluster;
 pub mod count;
 pub mod deflate;
 pub mod dual;
+pub mod graph;
 pub mod guarded;
 pub mod krawczyk;
 mod ledger;

@@ -9,10 +9,11 @@
 use rug::Rational;
 
 use super::result::{
-    CaseResult, ExactLineOut, ExactOut, LineOut, ParamLineOut, PointOut, SegmentOut,
+    CaseResult, CurveEndOut, CurveOut, CurveVertexOut, ExactLineOut, ExactOut, LineOut,
+    ParamLineOut, PointOut, SegmentOut, SingularPointOut,
 };
 use crate::certificate::Certified;
-use crate::ops::{Answer, LineAnswer, Point};
+use crate::ops::{Answer, CurveAnswer, CurveEnd, LineAnswer, Point, SingularPointAnswer};
 
 fn texts(v: &[Rational]) -> Vec<String> {
     v.iter().map(Rational::to_string).collect()
@@ -59,6 +60,52 @@ fn line(l: &LineAnswer) -> LineOut {
     }
 }
 
+fn curve(c: &CurveAnswer, singular: &[SingularPointOut]) -> CurveOut {
+    let end = |e: CurveEnd| CurveEndOut {
+        kind: e.as_str(),
+        index: match e {
+            CurveEnd::Singular(i) => Some(i),
+            _ => None,
+        },
+    };
+    CurveOut {
+        closed: c.closed,
+        points: c
+            .points
+            .iter()
+            .map(|v| CurveVertexOut {
+                xyz: v.xyz.clone(),
+                params: v.params.clone(),
+            })
+            .collect(),
+        singular_points: {
+            let mut at: Vec<usize> = c
+                .ends
+                .iter()
+                .filter_map(|e| match e {
+                    CurveEnd::Singular(i) => Some(*i),
+                    _ => None,
+                })
+                .collect();
+            at.dedup();
+            at.iter().filter_map(|&i| singular.get(i).cloned()).collect()
+        },
+        ends: c.ends.map(end),
+        status: c.status.as_str(),
+        distance_bound: c.distance_bound,
+        reason: c.reason.clone(),
+    }
+}
+
+fn singular_point(p: &SingularPointAnswer) -> SingularPointOut {
+    SingularPointOut {
+        point: point(&p.point),
+        status: p.status.as_str(),
+        perturbation: p.perturbation,
+        branches: p.branches,
+    }
+}
+
 /// The result record of an answer.
 pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
     let mut r = CaseResult::certified(id, c.value.kind(), c);
@@ -73,6 +120,15 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
             })
         }
         Answer::Side(_, nearest) => r.points = nearest.as_ref().map(|p| vec![point(p)]),
+        Answer::Curves(c) => {
+            let singular: Vec<SingularPointOut> =
+                c.singular_points.iter().map(singular_point).collect();
+            r.curves = Some(c.curves.iter().map(|k| curve(k, &singular)).collect());
+            r.singular_points = Some(singular);
+            if !c.points.is_empty() {
+                r.points = Some(c.points.iter().map(point).collect());
+            }
+        }
         Answer::Plane | Answer::Coincident | Answer::CommonComponent => {}
     }
     r

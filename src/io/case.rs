@@ -54,6 +54,8 @@ pub struct Options {
     pub max_bits: Option<u32>,
     /// The box budget of subdivision.
     pub max_boxes: Option<u64>,
+    /// Surface ∩ surface: the largest chord-to-curve distance of the polylines.
+    pub chord_tolerance: Option<Double>,
     /// A time budget for the case, in seconds (`geocert solve --time-limit` gives the
     /// default). Read and carried here; the operations do not enforce it yet.
     pub time_limit: Option<Double>,

@@ -93,6 +93,56 @@ pub struct SegmentOut {
     pub b: PointOut,
 }
 
+/// How one end of a curve ends (`ends[]` of `curves[]`): `closed`, `boundary` (a
+/// domain edge), `singular` (at `singular_points[index]`), `tangency` or `unfinished`
+/// (float trace only).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurveEndOut {
+    pub kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub index: Option<usize>,
+}
+
+/// One vertex of a curve's polyline.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurveVertexOut {
+    pub xyz: Vec<f64>,
+    /// One array per input object, in input order.
+    pub params: Vec<Vec<f64>>,
+}
+
+/// One curve of `curves[]` (kind `curves`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct CurveOut {
+    pub closed: bool,
+    pub points: Vec<CurveVertexOut>,
+    /// The singular points the curve ends at (copies of entries of the result's
+    /// `singular_points`, which `ends[].index` refers to).
+    pub singular_points: Vec<SingularPointOut>,
+    /// How the first and the last point end the curve.
+    pub ends: [CurveEndOut; 2],
+    /// `verified` (a proven chain of single-arc boxes covers it) or `undecided`.
+    pub status: &'static str,
+    /// A proven bound of the distance from every vertex to the curve (verified curves).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub distance_bound: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+/// One singular point of `singular_points[]`: a point with its certified box, the
+/// status of its proof and the perturbation of a proven contact.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct SingularPointOut {
+    #[serde(flatten)]
+    pub point: PointOut,
+    pub status: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub perturbation: Option<f64>,
+    /// How many certified curve ends meet it.
+    pub branches: usize,
+}
+
 /// `error` of a result.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ErrorOut {
@@ -133,6 +183,12 @@ pub struct CaseResult {
     pub line: Option<LineOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub segment: Option<SegmentOut>,
+    /// Kind `curves`: the intersection curves.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub curves: Option<Vec<CurveOut>>,
+    /// Kind `curves`: where branches cross or touch.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub singular_points: Option<Vec<SingularPointOut>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorOut>,
     /// `verify`: the verdict on each claimed item.
@@ -176,6 +232,8 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            curves: None,
+            singular_points: None,
             claims: None,
             missed: None,
             error: Some(ErrorOut {
@@ -202,6 +260,8 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            curves: None,
+            singular_points: None,
             error: None,
             claims: None,
             missed: None,

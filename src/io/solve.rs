@@ -33,13 +33,23 @@ pub fn solve_case(read: ReadCase) -> CaseResult {
 /// The options of a case.
 pub fn options(case: &Case) -> Result<Options, GeomError> {
     let o = &case.options;
-    Options::new(
+    let mut out = Options::new(
         o.tolerance.map(|d| d.0),
         o.equal_tolerance.map(|d| d.0),
         o.max_boxes,
         o.max_bits,
         o.exact,
-    )
+    )?;
+    if let Some(c) = o.chord_tolerance {
+        if !(c.0 > 0.0 && c.0.is_finite()) {
+            return Err(GeomError::InvalidValue {
+                field: "options.chord_tolerance".into(),
+                reason: format!("the chord tolerance must be positive, found {}", c.0),
+            });
+        }
+        out.chord_tolerance = Some(c.0);
+    }
+    Ok(out)
 }
 
 fn missing(field: &str, op: Op) -> GeomError {

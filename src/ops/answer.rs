@@ -9,6 +9,7 @@
 use rug::Rational;
 
 use super::classify::Side;
+use crate::certificate::Status;
 
 /// An enclosure `[lo, hi]` of one number.
 pub type Bounds = [f64; 2];
@@ -77,6 +78,87 @@ pub struct SegmentAnswer {
     pub b: Point,
 }
 
+/// How one end of an intersection curve ends (OPERATIONS.md §9.1 end kinds).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CurveEnd {
+    /// A closed curve (both ends).
+    Closed,
+    /// On the boundary of a parameter domain.
+    Boundary,
+    /// At the singular point with this index in [`CurvesAnswer::singular_points`].
+    Singular(usize),
+    /// The surfaces became tangent there and no singular point was resolved (float).
+    Tangency,
+    /// The float trace stopped (no convergence, or its point budget was spent).
+    Unfinished,
+}
+
+impl CurveEnd {
+    /// The name the case format uses (`closed`, `boundary`, `singular`, ...).
+    pub fn as_str(self) -> &'static str {
+        match self {
+            CurveEnd::Closed => "closed",
+            CurveEnd::Boundary => "boundary",
+            CurveEnd::Singular(_) => "singular",
+            CurveEnd::Tangency => "tangency",
+            CurveEnd::Unfinished => "unfinished",
+        }
+    }
+}
+
+/// One vertex of an intersection curve's polyline.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveVertex {
+    /// The point (OPERATIONS.md (1.21): the mean of the two surfaces' points).
+    pub xyz: Vec<f64>,
+    /// The parameters on each input shape, in input order (empty for shapes without
+    /// parameters, such as implicit planes).
+    pub params: Vec<Vec<f64>>,
+    /// A proven upper bound of the distance from `xyz` to the true curve (`None` when the
+    /// curve is not certified).
+    pub bound: Option<f64>,
+}
+
+/// One intersection curve: an ordered polyline (for a closed curve the last vertex
+/// repeats the first).
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurveAnswer {
+    pub points: Vec<CurveVertex>,
+    pub closed: bool,
+    /// How the first and the last vertex end the curve.
+    pub ends: [CurveEnd; 2],
+    /// The largest vertex bound: every vertex lies within it of the curve (proven;
+    /// `None` when the curve is not certified).
+    pub distance_bound: Option<f64>,
+    /// `Verified`: the curve is covered by a proven chain of boxes, each holding a single
+    /// smooth arc, and its ends are proven; `Undecided` otherwise (`reason`).
+    pub status: Status,
+    pub reason: Option<String>,
+}
+
+/// A singular point of an intersection: branches cross or touch there.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SingularPointAnswer {
+    /// The point, its certified box and parameters (multiplicity 2, tangent).
+    pub point: Point,
+    /// `VerifiedSingular`: a contact of the surfaces perturbed by at most `perturbation`
+    /// lies in the box; `Undecided` otherwise.
+    pub status: Status,
+    pub perturbation: Option<f64>,
+    /// How many certified curve ends meet it.
+    pub branches: usize,
+}
+
+/// The answer of surface ∩ surface (OPERATIONS.md §9, §10): curves, the singular points
+/// where they cross or touch, and isolated contact points.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct CurvesAnswer {
+    pub curves: Vec<CurveAnswer>,
+    pub singular_points: Vec<SingularPointAnswer>,
+    /// Isolated points of the intersection (two spheres touching from outside).
+    pub points: Vec<Point>,
+}
+
 /// The answer of an operation.
 #[derive(Debug, Clone, PartialEq)]
 // One answer per operation call: its size does not matter, boxing would only add noise.
@@ -98,6 +180,8 @@ pub enum Answer {
     CommonComponent,
     /// `classify`: the side of the shell, and its nearest point when it is proven.
     Side(Side, Option<Point>),
+    /// Intersection curves with their singular and isolated points (surface ∩ surface).
+    Curves(CurvesAnswer),
 }
 
 impl Answer {
@@ -113,6 +197,7 @@ impl Answer {
             Answer::Coincident => "coincident",
             Answer::CommonComponent => "common_component",
             Answer::Side(side, _) => side.as_str(),
+            Answer::Curves(_) => "curves",
         }
     }
 
@@ -121,6 +206,7 @@ impl Answer {
         match self {
             Answer::Points(p) => p,
             Answer::Side(_, Some(p)) => std::slice::from_ref(p),
+            Answer::Curves(c) => &c.points,
             _ => &[],
         }
     }

@@ -34,9 +34,13 @@ pub mod polyhedron;
 pub mod project;
 pub mod shape;
 pub mod space_curves;
+pub mod surface_surface;
 pub mod verify;
 
-pub use answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
+pub use answer::{
+    Answer, CurveAnswer, CurveEnd, CurveVertex, CurvesAnswer, ExactPoint, LineAnswer, ParamLine,
+    Point, SegmentAnswer, SingularPointAnswer,
+};
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use front::{classify, intersect, project};
 pub use options::{Options, ProjectOptions};

@@ -18,6 +18,9 @@ pub struct Options {
     /// Report the exact rationals of exact answers, and run linear shapes through the
     /// exact rational kernel.
     pub exact: bool,
+    /// Surface ∩ surface: the largest distance between a polyline chord and the curve
+    /// (float estimate from the curvature, OPERATIONS.md §9.3); `None`: `10⁻⁴·L`.
+    pub chord_tolerance: Option<f64>,
 }
 
 impl Default for Options {
@@ -30,6 +33,7 @@ impl Default for Options {
             // bits that costs ~100× more (measured).
             max_bits: 512,
             exact: false,
+            chord_tolerance: None,
         }
     }
 }

@@ -60,6 +60,9 @@ pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Ans
     if is_plane_shape(a) && is_plane_shape(b) {
         return plane_curves(a, b, opts);
     }
+    if let Some(r) = super::intersect_surfaces::pair(a, b, opts) {
+        return r;
+    }
     match (a, b) {
         (Shape::Surface(s), other) => curve_surface(s, other, 1, true, opts),
         (other, Shape::Surface(s)) => curve_surface(s, other, 0, false, opts),

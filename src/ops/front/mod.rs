@@ -11,6 +11,7 @@
 mod classify;
 mod intersect;
 mod intersect_curved;
+mod intersect_surfaces;
 mod points;
 mod project;
 mod project_curved;

@@ -1,0 +1,177 @@
+//! The operands of surface ∩ surface and what the operation knows about them: the
+//! parametric surface (always) and its implicit form when it has one (§1.4, §1.6; used by
+//! the Dragilev forms (10.4), (10.9) and to locate singular points), the four
+//! coordinates `[u, v, a, b]` with their domains, and the model scale `L` (§0.3).
+
+use super::options::Options;
+use crate::error::GeomError;
+use crate::num::vector::norm_f64;
+use crate::ops::float::Coordinate;
+use crate::surface::bezier::BezierSurface;
+use crate::surface::bilinear::Bilinear;
+use crate::surface::nurbs::NurbsSurface;
+use crate::surface::plane::{ParaboloidRect, Plane};
+use crate::surface::quadrics::{Cone, Cylinder, Ellipsoid, Hyperboloid, Paraboloid, Sphere};
+use crate::surface::torus::Torus;
+use crate::surface::{AnyImplicit, AnySurface, Surface};
+use crate::walk::surface::{SurfaceStepper, SurfaceWalkOptions};
+
+/// A surface that may also have an implicit form `G(x) = 0` (§1.4) vanishing exactly on
+/// it. The implicit form may describe more than the parametric domain (a whole cylinder
+/// for a cylinder of finite height); the operation clips by the parametric domain.
+pub trait SurfaceOperand: Surface {
+    /// The implicit form, if any (default: none — patches, test surfaces).
+    fn implicit_form(&self) -> Option<AnyImplicit> {
+        None
+    }
+}
+
+impl SurfaceOperand for AnySurface {
+    fn implicit_form(&self) -> Option<AnyImplicit> {
+        self.implicit()
+    }
+}
+
+macro_rules! implicit_operand {
+    ($($t:ident),*) => {$(
+        impl SurfaceOperand for $t {
+            fn implicit_form(&self) -> Option<AnyImplicit> {
+                Some(AnyImplicit::$t(self.clone()))
+            }
+        }
+    )*};
+}
+implicit_operand!(
+    Plane,
+    Sphere,
+    Ellipsoid,
+    Hyperboloid,
+    Paraboloid,
+    ParaboloidRect,
+    Cylinder,
+    Cone,
+    Torus
+);
+impl SurfaceOperand for BezierSurface {}
+impl SurfaceOperand for NurbsSurface {}
+impl SurfaceOperand for Bilinear {}
+
+/// The two operands with everything the float path needs about them.
+pub struct Pair<'a, R, S> {
+    pub r: &'a R,
+    pub s: &'a S,
+    /// `[u, v, a, b]`: domain, periodicity, Newton's ε, the divergence margin.
+    pub coords: [Coordinate; 4],
+    /// The domain bounds of each coordinate are roundings of irrational values.
+    pub rounded: [bool; 4],
+    /// `L`, the diagonal of the bounding box of both surfaces (§0.3).
+    pub length: f64,
+    /// The implicit forms of `r` and `s`.
+    pub implicit: [Option<AnyImplicit>; 2],
+    pub steppers: (SurfaceStepper<'a, R>, SurfaceStepper<'a, S>),
+    pub options: &'a Options,
+}
+
+impl<'a, R: SurfaceOperand, S: SurfaceOperand> Pair<'a, R, S> {
+    /// Errors: an unbounded parameter domain (field `objects[0].domain` / `objects[1].domain`), invalid
+    /// options.
+    pub fn new(r: &'a R, s: &'a S, options: &'a Options) -> Result<Self, GeomError> {
+        options.check()?;
+        let walk = SurfaceWalkOptions::new(options.delta_alpha);
+        let sr = SurfaceStepper::new(r, walk).map_err(|e| e.at("objects[0]"))?;
+        let ss = SurfaceStepper::new(s, walk).map_err(|e| e.at("objects[1]"))?;
+        let (ru, rv) = r.domain();
+        let (sa, sb) = s.domain();
+        let domains = [ru, rv, sa, sb];
+        let closed = [r.is_closed(), s.is_closed()];
+        let rounded_r = r.domain_rounded();
+        let rounded_s = s.domain_rounded();
+        let eps = options.precision.eps;
+        let coords = std::array::from_fn(|i| {
+            let [lo, hi] = domains[i];
+            Coordinate {
+                lo,
+                hi,
+                periodic: closed[i / 2][i % 2],
+                eps: eps * (hi - lo).max(1.0),
+                margin: hi - lo,
+            }
+        });
+        let length = bounding_diagonal(r, ru, rv).max(bounding_diagonal(s, sa, sb));
+        Ok(Pair {
+            r,
+            s,
+            coords,
+            rounded: [rounded_r[0], rounded_r[1], rounded_s[0], rounded_s[1]],
+            length: if length > 0.0 { length } else { 1.0 },
+            implicit: [r.implicit_form(), s.implicit_form()],
+            steppers: (sr, ss),
+            options,
+        })
+    }
+}
+
+impl<R, S> Pair<'_, R, S> {
+    /// `δ_len = δ·L` (§12).
+    pub fn delta_len(&self) -> f64 {
+        self.options.precision.delta * self.length
+    }
+
+    /// The periodic distance between two values of coordinate `i` (§0.4).
+    pub fn param_distance(&self, i: usize, x: f64, y: f64) -> f64 {
+        let c = &self.coords[i];
+        let d = (x - y).abs();
+        if c.periodic {
+            let p = c.hi - c.lo;
+            let r = d.rem_euclid(p);
+            r.min(p - r)
+        } else {
+            d
+        }
+    }
+
+    /// `y` shifted by whole periods to lie nearest to `x` (coordinate `i`).
+    pub fn unwrap_near(&self, i: usize, x: f64, y: f64) -> f64 {
+        let c = &self.coords[i];
+        if !c.periodic {
+            return y;
+        }
+        let p = c.hi - c.lo;
+        y - ((y - x) / p).round() * p
+    }
+
+    /// All periodic coordinates of `x` wrapped into their domain.
+    pub fn wrap(&self, x: [f64; 4]) -> [f64; 4] {
+        std::array::from_fn(|i| self.coords[i].wrap(x[i]))
+    }
+
+    /// `x` lies in the domain (non-periodic coordinates within `slack`).
+    pub fn inside(&self, x: &[f64; 4], slack: f64) -> bool {
+        self.coords.iter().zip(x).all(|(c, &v)| {
+            let s = slack * (c.hi - c.lo).max(1.0);
+            c.periodic || (c.lo - s <= v && v <= c.hi + s)
+        })
+    }
+}
+
+/// The diagonal of the bounding box of a 7 × 7 grid of the surface's points.
+fn bounding_diagonal<S: Surface>(s: &S, u: [f64; 2], v: [f64; 2]) -> f64 {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for i in 0..7 {
+        for j in 0..7 {
+            let at = |[a, b]: [f64; 2], k: usize| a + (b - a) * (k as f64 / 6.0);
+            let p = s.jet(&at(u, i), &at(v, j), 0)[0];
+            for c in 0..3 {
+                lo[c] = lo[c].min(p[c]);
+                hi[c] = hi[c].max(p[c]);
+            }
+        }
+    }
+    let d = norm_f64::<3>(&std::array::from_fn(|c| hi[c] - lo[c]));
+    if d.is_finite() {
+        d
+    } else {
+        0.0
+    }
+}
