@@ -16,7 +16,7 @@ use std::f64::consts::FRAC_PI_2;
 use rug::float::{Constant, Round};
 use rug::Float;
 
-use super::surface::surface_foot_equations;
+use super::equations::surface_foot_equations;
 use crate::certificate::Status;
 use crate::certify::Root;
 use crate::num::real::Arith;

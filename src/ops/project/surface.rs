@@ -8,10 +8,11 @@
 //! "Nearest", exact mode).
 
 use super::curve::{changes_sign, project_point_curve_f64, CurveFeet};
+use super::equations::surface_foot_equations;
 use crate::certify::system::value_and_rows;
 use crate::certify::System;
 use crate::curve::Curve;
-use crate::num::vector::{dot, lift, norm_f64, sub};
+use crate::num::vector::{lift, norm_f64, sub};
 use crate::num::Real;
 use crate::ops::float::merge::{merge_duplicates, ParamTolerance};
 use crate::ops::float::{newton, Coordinate, NewtonOutcome, Precision};
@@ -37,30 +38,6 @@ pub enum SurfaceFeet {
     Finite(Vec<SurfaceFoot>),
     /// A continuum of feet (the centre of a sphere, §3.4).
     Infinite,
-}
-
-/// (3.9) `[F₁, F₂]` and, with `jacobian`, the matrix of (3.11)
-/// `[[(p−s)·s_uu − s_u·s_u, (p−s)·s_uv − s_v·s_u], [(p−s)·s_uv − s_u·s_v, (p−s)·s_vv − s_v·s_v]]`,
-/// written once for every number type.
-pub fn surface_foot_equations<T: Real, S: Surface>(
-    surface: &S,
-    p: &[T; 3],
-    u: &T,
-    v: &T,
-    jacobian: bool,
-) -> ([T; 2], Option<[[T; 2]; 2]>) {
-    let jet = surface.jet(u, v, if jacobian { 2 } else { 1 });
-    let d = sub(p, &jet[0]);
-    let f = [dot(&d, &jet[1]), dot(&d, &jet[2])];
-    let j = jacobian.then(|| {
-        let (su, sv) = (&jet[1], &jet[2]);
-        let uv = dot(&d, &jet[4]) - dot(su, sv);
-        [
-            [dot(&d, &jet[3]) - dot(su, su), uv.clone()],
-            [uv, dot(&d, &jet[5]) - dot(sv, sv)],
-        ]
-    });
-    (f, j)
 }
 
 /// All feet of the perpendiculars from `p` onto `surface` (§3.4), float only, from the
