@@ -261,12 +261,31 @@ fn a_file_without_errors_exits_zero_and_demo_cases_all_solve() {
     assert_eq!(r.len(), cases.len());
     for (c, res) in cases.iter().zip(&r) {
         assert_eq!(res["id"], c["id"]);
-        assert_eq!(res["status"], "exact", "{res}");
+        assert_eq!(
+            res["status"],
+            demo_status(c["id"].as_str().unwrap()),
+            "{res}"
+        );
+    }
+}
+
+/// The status each demo case must have: the linear cases and the algebraic curved ones
+/// are exact; the rest is certified numerically.
+fn demo_status(id: &str) -> &'static str {
+    match id {
+        "nearest point of a torus"
+        | "sphere ∩ sphere: a circle"
+        | "sphere ∩ ellipsoid"
+        | "three spheres" => "verified",
+        "touching spheres" => "verified_singular",
+        // One of the four branches is not proven to join (OPERATIONS.md §16.12 family).
+        "Steinmetz: crossing cylinders" => "undecided",
+        _ => "exact",
     }
 }
 
 #[test]
-fn demo_prints_one_exact_row_per_case() {
+fn demo_prints_one_row_per_case_with_its_status() {
     let out = Command::new(env!("CARGO_BIN_EXE_geocert"))
         .arg("demo")
         .output()
@@ -281,7 +300,8 @@ fn demo_prints_one_exact_row_per_case() {
             .lines()
             .find(|l| l.starts_with(id))
             .unwrap_or_else(|| panic!("no row for {id}"));
-        assert!(row[id.len()..].trim_start().starts_with("exact"), "{row}");
+        let status = row[id.len()..].split_whitespace().next().unwrap();
+        assert_eq!(status, demo_status(id), "{row}");
     }
 }
 

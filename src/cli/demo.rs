@@ -1,6 +1,8 @@
-//! `geocert demo`: the worked linear examples of OPERATIONS.md §16.2, §16.5, §16.7,
-//! §16.8 and a few degenerate ones, solved through the same path as `geocert solve`
-//! and printed as a table of status, kind, point and time.
+//! `geocert demo`: the worked examples of OPERATIONS.md §16.2–§16.9 and a few degenerate
+//! linear ones, then curved cases (§16.3 ellipse feet, §16.4 line ∩ sphere, §16.6 conics,
+//! a torus, surface ∩ surface curves with singular points, three spheres), solved
+//! through the same path as `geocert solve` and printed as a table of status, kind,
+//! point and time.
 
 use super::table::{answer_text, id_text};
 use geocert::io::result::CaseResult;
@@ -18,15 +20,15 @@ pub fn run() -> ExitCode {
         .unwrap_or(4)
         .max(4);
     println!(
-        "{:<id_width$}  {:<9}  {:<10}  {:<10}  {:>7}  answer",
+        "{:<id_width$}  {:<17}  {:<10}  {:<10}  {:>7}  answer",
         "case", "status", "kind", "decided by", "µs"
     );
-    println!("{}", "-".repeat(id_width + 80));
+    println!("{}", "-".repeat(id_width + 88));
     let mut failed = false;
     for r in &results {
         failed |= r.status == "error";
         println!(
-            "{:<id_width$}  {:<9}  {:<10}  {:<10}  {:>7}  {}",
+            "{:<id_width$}  {:<17}  {:<10}  {:<10}  {:>7}  {}",
             id_text(&r.id),
             r.status,
             r.kind.unwrap_or("-"),
@@ -36,7 +38,10 @@ pub fn run() -> ExitCode {
         );
     }
     println!();
-    println!("Every row is decided for the exact input; coordinates are correctly rounded.");
+    println!("Statuses: `exact` decided for the exact input, coordinates correctly rounded;");
+    println!(
+        "`verified` / `verified_singular` proven in boxes (JSON `box`); `undecided` says why."
+    );
     println!("Run `geocert solve FILE` for JSON Lines of the same results (docs/FORMAT.md),");
     println!("or `geocert solve --format table FILE` for this table without the times.");
     if failed {

@@ -73,6 +73,8 @@ pub fn answer_text(r: &CaseResult) -> String {
         )
     } else if let Some(seg) = &r.segment {
         format!("{} – {}", vector_text(&seg.a.xyz), vector_text(&seg.b.xyz))
+    } else if let Some(curves) = &r.curves {
+        curves_text(curves, r.singular_points.as_deref().unwrap_or(&[]))
     } else {
         r.reason.clone().unwrap_or_default()
     };
@@ -87,6 +89,41 @@ pub fn answer_text(r: &CaseResult) -> String {
         text = format!("{text} | missed {}", missed.len());
     }
     text
+}
+
+/// Kind `curves`: one phrase per curve (closed or open, vertices, its status and proven
+/// distance bound) and per singular point (where, its status, how many branches meet).
+fn curves_text(
+    curves: &[geocert::io::result::CurveOut],
+    singular: &[geocert::io::result::SingularPointOut],
+) -> String {
+    let mut parts: Vec<String> = curves
+        .iter()
+        .map(|c| {
+            let shape = if c.closed { "closed" } else { "open" };
+            let mut s = format!("{shape} curve, {} vertices, {}", c.points.len(), c.status);
+            if let Some(d) = c.distance_bound {
+                s += &format!(" within {}", shortest(d));
+            }
+            if let Some(reason) = &c.reason {
+                s += &format!(" ({reason})");
+            }
+            s
+        })
+        .collect();
+    parts.extend(singular.iter().map(|p| {
+        format!(
+            "singular point {} {}, {} branches",
+            vector_text(&p.point.xyz),
+            p.status,
+            p.branches
+        )
+    }));
+    if parts.is_empty() {
+        "no curve".to_string()
+    } else {
+        parts.join("; ")
+    }
 }
 
 fn point_text(p: &geocert::io::result::PointOut) -> String {
