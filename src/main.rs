@@ -46,9 +46,10 @@ struct RunArgs {
     #[arg(long, value_name = "BITS")]
     max_bits: Option<u32>,
     /// Time budget per case in seconds, for cases whose `options` do not set
-    /// `time_limit`. Recorded in the options; not enforced by the operations yet.
-    #[arg(long, value_name = "SECONDS", value_parser = positive_seconds)]
-    time_limit: Option<f64>,
+    /// `time_limit`: when it runs out the certifier stops subdividing and the rest is
+    /// `undecided` ("time limit reached"), so a pathological case cannot hold the run.
+    #[arg(long, value_name = "SECONDS", value_parser = positive_seconds, default_value_t = 60.0)]
+    time_limit: f64,
 }
 
 fn positive_seconds(s: &str) -> Result<f64, String> {
@@ -89,7 +90,7 @@ fn run(mode: Mode, args: RunArgs, progress: bool) -> ExitCode {
         defaults: Defaults {
             max_boxes: args.max_boxes,
             max_bits: args.max_bits,
-            time_limit: args.time_limit,
+            time_limit: Some(args.time_limit),
         },
         panic_id: std::env::var("GEOCERT_TEST_PANIC_ID").ok(),
     };

@@ -135,6 +135,33 @@ fn command_line_budgets_are_defaults_for_cases_without_their_own() {
 }
 
 #[test]
+fn a_spent_time_limit_leaves_the_rest_undecided_and_says_so() {
+    // A microsecond is spent before the certifier takes its first box, so the answer
+    // does not depend on the machine: nothing is proven, and the reason says why.
+    let sphere_ellipsoid = r#"{"id":"se","options":{"time_limit":1e-6},"op":"intersect","objects":[{"type":"sphere","center":[0.1,-0.2,0.3],"radius":2},{"type":"ellipsoid","center":[0,0,0],"a":3,"b":2,"c":1}]}"#;
+    let helix_sphere = r#"{"id":"hs","options":{"time_limit":1e-6},"op":"intersect","objects":[{"type":"helix","center":[0,0,0],"radius":1,"pitch":1,"axis":[0,0,1],"range":[0,12.566370614359172]},{"type":"sphere","center":[0,0,1],"radius":1.2}]}"#;
+    for input in [sphere_ellipsoid, helix_sphere] {
+        let r = json_lines(&run("solve", &[], input.as_bytes()));
+        // What was proven before the limit stays (a curve chain may be verified), but
+        // nothing is claimed complete.
+        assert_ne!(r[0]["complete"], true, "{}", r[0]["reason"]);
+        assert!(
+            r[0].to_string().contains("time limit reached"),
+            "{}",
+            r[0]["reason"]
+        );
+    }
+    // Without the limit the same case is decided.
+    let free = helix_sphere.replace(r#""options":{"time_limit":1e-6},"#, "");
+    let free = json_lines(&run("solve", &[], free.as_bytes()));
+    assert_eq!(free[0]["complete"], true, "{}", free[0]);
+    // max_bits is capped (2³²−1 bits would never end): a typed error naming it.
+    let huge = GOOD.replace(r#""id":"g","#, r#""id":"g","options":{"max_bits":100000},"#);
+    let r = json_lines(&run("solve", &[], huge.as_bytes()));
+    assert_eq!(r[0]["error"]["field"], "options.max_bits", "{}", r[0]);
+}
+
+#[test]
 fn exit_status_bits() {
     assert_eq!(
         geocert(&["solve", "/nonexistent/cases.jsonl"])

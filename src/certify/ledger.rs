@@ -24,6 +24,7 @@ pub struct Ledger {
     pub(super) levels: Vec<u32>,
     budget: usize,
     used: usize,
+    deadline: Option<std::time::Instant>,
     found: Vec<Found>,
     undecided: Vec<UndecidedBox>,
     excluded_volume: f64,
@@ -74,6 +75,7 @@ impl Ledger {
             levels: levels(opts.max_bits),
             budget: opts.max_boxes,
             used: 0,
+            deadline: opts.deadline,
             found: Vec::new(),
             undecided: Vec::new(),
             excluded_volume: 0.0,
@@ -81,17 +83,32 @@ impl Ledger {
         }
     }
 
-    /// Count one box against the budget; false once it is spent.
+    /// Count one box against the budget; false once it is spent or the deadline has
+    /// passed ([`Ledger::spent`] says which).
     pub fn take_box(&mut self) -> bool {
         self.take(1)
     }
 
     pub(super) fn take(&mut self, k: usize) -> bool {
-        if self.used + k > self.budget {
+        if self.used + k > self.budget || self.late() {
             return false;
         }
         self.used += k;
         true
+    }
+
+    fn late(&self) -> bool {
+        self.deadline
+            .is_some_and(|d| std::time::Instant::now() >= d)
+    }
+
+    /// Why [`Ledger::take_box`] refused: the reason recorded with the boxes left.
+    pub fn spent(&self) -> &'static str {
+        if self.late() {
+            "time limit reached"
+        } else {
+            "box budget spent"
+        }
     }
 
     /// Record an undecided box (outward in doubles) and why.

@@ -74,6 +74,10 @@ pub struct Options {
     /// precision but handed to the cluster tests and escalation (0: only the
     /// precision-based width of [`subdivide::stuck_width`]).
     pub min_width: f64,
+    /// A wall-clock deadline, checked with every box taken from the budget: once it has
+    /// passed, the boxes left are reported undecided ("time limit reached"), as when the
+    /// budget is spent. `None`: no limit (the answer then never depends on timing).
+    pub deadline: Option<std::time::Instant>,
 }
 
 impl Default for Options {
@@ -82,6 +86,7 @@ impl Default for Options {
             max_boxes: 20_000,
             max_bits: 512,
             min_width: 0.0,
+            deadline: None,
         }
     }
 }

@@ -59,7 +59,7 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
             .iter()
             .fold(cluster[0].clone(), |h, x| boxes::hull(&h, x));
         if !ledger.take(CLUSTER_COST) {
-            ledger.undecided(&hull, "box budget spent");
+            ledger.undecided(&hull, ledger.spent());
             continue;
         }
         let top = ledger.levels.len();

@@ -37,9 +37,9 @@ pub fn subdivide<S: System, I: CertInterval>(
     let mut stuck = Vec::new();
     while let Some(x) = stack.pop() {
         if !ledger.take_box() {
-            ledger.undecided(&x, "box budget spent");
+            ledger.undecided(&x, ledger.spent());
             for rest in stack.drain(..) {
-                ledger.undecided(&rest, "box budget spent");
+                ledger.undecided(&rest, ledger.spent());
             }
             break;
         }

@@ -57,7 +57,7 @@ pub struct Options {
     /// Surface ∩ surface: the largest chord-to-curve distance of the polylines.
     pub chord_tolerance: Option<Double>,
     /// A time budget for the case, in seconds (`geocert solve --time-limit` gives the
-    /// default). Read and carried here; the operations do not enforce it yet.
+    /// default): the certifier stops taking boxes when it runs out (ops::Options::time_limit).
     pub time_limit: Option<Double>,
     /// Also report the exact rationals of exact results (`"p/q"` strings).
     #[serde(default)]

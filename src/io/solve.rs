@@ -49,6 +49,10 @@ pub fn options(case: &Case) -> Result<Options, GeomError> {
         }
         out.chord_tolerance = Some(c.0);
     }
+    // Validated positive when the case was read; beyond ~10¹¹ years it is no limit.
+    out.time_limit = o
+        .time_limit
+        .and_then(|t| std::time::Duration::try_from_secs_f64(t.0).ok());
     Ok(out)
 }
 

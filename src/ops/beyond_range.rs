@@ -78,6 +78,7 @@ pub fn exact_beyond_range(
     opts: &Options,
     solve: impl Fn(&Options) -> Result<Certified<Answer>, GeomError>,
 ) -> Result<Certified<Answer>, GeomError> {
+    let opts = &opts.started();
     let first = solve(opts)?;
     if opts.exact || !answer_beyond_range(&first.value) {
         return Ok(first);

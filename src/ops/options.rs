@@ -21,7 +21,18 @@ pub struct Options {
     /// Surface ∩ surface: the largest distance between a polyline chord and the curve
     /// (float estimate from the curvature, OPERATIONS.md §9.3); `None`: `10⁻⁴·L`.
     pub chord_tolerance: Option<f64>,
+    /// The wall-clock budget of one call of the front door; `None`: no limit (the
+    /// default: the answer never depends on timing). When it runs out the certifier
+    /// stops taking boxes and what is left is `undecided`, "time limit reached".
+    pub time_limit: Option<std::time::Duration>,
+    /// The deadline of the call in progress, set by [`Options::started`] at the front
+    /// door from `time_limit` (callers leave it `None`).
+    pub deadline: Option<std::time::Instant>,
 }
+
+/// The largest `max_bits` accepted (`options.max_bits`): beyond it one Krawczyk step
+/// costs seconds, and 2³²−1 bits would not end.
+pub const MAX_BITS: u32 = 1 << 16;
 
 impl Default for Options {
     fn default() -> Self {
@@ -34,6 +45,8 @@ impl Default for Options {
             max_bits: 512,
             exact: false,
             chord_tolerance: None,
+            time_limit: None,
+            deadline: None,
         }
     }
 }
@@ -73,9 +86,27 @@ impl Options {
             o.max_boxes = usize::try_from(b).unwrap_or(usize::MAX);
         }
         if let Some(b) = max_bits {
+            if b > MAX_BITS {
+                return Err(GeomError::InvalidValue {
+                    field: "options.max_bits".into(),
+                    reason: format!("{b} bits is more than the maximum {MAX_BITS}"),
+                });
+            }
             o.max_bits = b;
         }
         Ok(o)
+    }
+
+    /// These options with the deadline of a call starting now (`time_limit` from now),
+    /// unless a deadline is already set (an inner call keeps the outer one).
+    pub fn started(&self) -> Options {
+        let mut o = self.clone();
+        if o.deadline.is_none() {
+            o.deadline = o
+                .time_limit
+                .and_then(|t| std::time::Instant::now().checked_add(t));
+        }
+        o
     }
 
     /// The certifier's options.
@@ -84,6 +115,7 @@ impl Options {
             max_boxes: self.max_boxes,
             max_bits: self.max_bits,
             min_width: 0.0,
+            deadline: self.deadline,
         }
     }
 }
