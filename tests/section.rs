@@ -860,3 +860,26 @@ fn typed_errors_name_the_field() {
         "objects"
     );
 }
+
+#[test]
+fn intersect_plane_and_whole_sphere_decides_the_section_exactly_first() {
+    let case = |d: &str| {
+        format!(
+            r#"{{"op": "intersect", "objects": [{{"type": "plane", "normal": [0, 0, 1], "d": {d}}},
+                {{"type": "sphere", "center": [0, 0, 0], "radius": 1}}]}}"#
+        )
+    };
+    // One ulp beyond the tangent plane z = 1: exactly empty, complete.
+    let r = solve(&case(&format!("{:e}", -next_up(1.0))));
+    assert_eq!(r["kind"], "empty", "{r}");
+    assert_eq!(r["status"], "exact");
+    assert_eq!(r["complete"], true);
+    // z = 1/2: the traced circle carries the exact conic (radius √3/2).
+    let r = solve(&case("-0.5"));
+    assert_eq!(r["kind"], "curves", "{r}");
+    assert_eq!(r["conic"]["type"], "circle");
+    let len = r["conic"]["axes"][0]["length"]["value"][0]
+        .as_f64()
+        .unwrap();
+    assert_eq!(len, 3f64.sqrt() / 2.0);
+}

@@ -7,6 +7,7 @@
 
 pub mod conic;
 pub mod form;
+mod front;
 pub mod plane;
 pub mod polygon;
 pub mod surd;
@@ -15,6 +16,7 @@ use rug::Rational;
 
 pub use conic::{section_plane_quadric, ConicAxis, ConicLine, ConicType, Section};
 pub use form::{is_whole, quadric_of_surface};
+pub(crate) use front::intersect_plane_quadric;
 pub use plane::{plane_through_points, plane_through_points_exact, ExactPlane, PlaneFrame};
 pub use polygon::{section_plane_polyhedron, SectionLoop};
 pub use surd::{Surd, Value};
