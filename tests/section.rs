@@ -5,6 +5,8 @@
 //! through the apex, polyhedron sections through vertices, edges and faces with
 //! rational truth, and typed errors.
 
+#![allow(clippy::needless_range_loop)]
+
 use geocert::num::rng::Rng;
 use geocert::ops::algebraic::QuadricForm;
 use geocert::ops::section::{
@@ -392,7 +394,7 @@ fn spheres_cut_at_and_one_ulp_around_tangency() {
             assert_eq!(s.kind, want, "r {r} h {h}");
             if want == ConicType::Circle {
                 // radius² = r² − (h − c)², correctly rounded.
-                let k = Rational::from(q(r) * q(r)) - Rational::from((q(h) - q(c[axis])).square());
+                let k = q(r) * q(r) - (q(h) - q(c[axis])).square();
                 let truth = Float::with_val(2000, &k).sqrt().to_f64();
                 assert_eq!(s.axes[0].length.value, truth);
                 assert_eq!(s.axes[1].length.value, truth);
@@ -470,8 +472,8 @@ fn cones_through_and_off_the_apex() {
             }
         };
         let (nq, aq) = (n.map(q), axis.map(q));
-        let lhs = Rational::from(dot(&nq, &aq).square()) * (Rational::from(q(k).square()) + 1u32);
-        let rhs = Rational::from(q(k).square()) * dot(&nq, &nq) * dot(&aq, &aq);
+        let lhs = dot(&nq, &aq).square() * (q(k).square() + 1u32);
+        let rhs = q(k).square() * dot(&nq, &nq) * dot(&aq, &aq);
         let side = lhs.cmp(&rhs); // Less: φ < α
         let d0 = -dot(&nq, &apex.map(q)).to_f64();
         let through = section_plane_quadric(&plane(n, d0), &cone);
@@ -582,7 +584,7 @@ fn area2(n: &[Rational; 3], v: &[[Rational; 3]]) -> Rational {
         s += dot(n, &cross(&v[i], &v[(i + 1) % v.len()]));
     }
     assert!(s.cmp0() != Ordering::Less, "counter-clockwise seen from +n");
-    Rational::from(s.square()) / (dot(n, n) * 4u32)
+    s.square() / (dot(n, n) * 4u32)
 }
 
 #[test]
@@ -598,7 +600,7 @@ fn cube_sections_through_vertices_edges_and_faces() {
             d: -k.clone(),
         };
         let loops = section_plane_polyhedron(&p, &cube);
-        if k < 0 || k > 3 {
+        if !(0..=3).contains(&k) {
             assert!(loops.is_empty());
             continue;
         }
@@ -622,7 +624,7 @@ fn cube_sections_through_vertices_edges_and_faces() {
         assert_eq!(area2(&n, v), want, "k = {k}");
         let count = if k == 0 || k == 3 {
             1
-        } else if k == 1 || k == 2 || k < 1 || k > 2 {
+        } else if !(1..=2).contains(&k) || k == 1 || k == 2 {
             3
         } else {
             6

@@ -335,7 +335,7 @@ impl QuadricForm<3> {
         }
         let mut wl: [Rational; 3] = std::array::from_fn(|_| Rational::new());
         for (k, v) in [&x, &y, &z].into_iter().enumerate() {
-            wl[k] = Rational::from(&w[k] / dot(v, v));
+            wl[k] = &w[k] / dot(v, v);
         }
         let local = diagonal(wl, beta_local, c);
         Ok(Some(QuadricForm::in_frame(&local, &p, &[x, y, z])))

@@ -400,8 +400,8 @@ fn parabola(
     let bd = Rational::from(&b[0] * &d[0]) + Rational::from(&b[1] * &d[1]);
     let lam = -q(&y0) / Rational::from(&bd * 2u32);
     let v = [
-        Rational::from(&y0[0] + Rational::from(&lam * &d[0])),
-        Rational::from(&y0[1] + Rational::from(&lam * &d[1])),
+        &y0[0] + Rational::from(&lam * &d[0]),
+        &y0[1] + Rational::from(&lam * &d[1]),
     ];
     out.center = Some(out.frame.point(&v[0], &v[1]));
     out.center_uv = Some(out.frame.true_size_coords(&surd(&v[0]), &surd(&v[1])));

@@ -89,7 +89,7 @@ fn values(s: &Section) -> Vec<&Value> {
 }
 
 fn bits(q: &Rational) -> u32 {
-    (q.numer().significant_bits() + q.denom().significant_bits()) as u32
+    q.numer().significant_bits() + q.denom().significant_bits()
 }
 
 /// The answer of plane ∩ quadric: kind `empty`, `coincident` (the plane lies in the

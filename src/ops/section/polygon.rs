@@ -128,7 +128,7 @@ fn crossing(
     if s_hi.cmp0() == Ordering::Equal {
         return hi.clone();
     }
-    let t = Rational::from(s_lo / Rational::from(s_lo - s_hi));
+    let t = s_lo / Rational::from(s_lo - s_hi);
     std::array::from_fn(|i| Rational::from(&hi[i] - &lo[i]) * &t + &lo[i])
 }
 
