@@ -21,6 +21,7 @@ fn plane(p: &PlaneIn) -> ObjectSpec {
             v: Some(nums(v)),
             normal: None,
             d: None,
+            points: None,
         },
         PlaneIn::Implicit { normal, d } => PlaneSpec {
             origin: None,
@@ -28,6 +29,7 @@ fn plane(p: &PlaneIn) -> ObjectSpec {
             v: None,
             normal: Some(nums(normal)),
             d: Some(Num::Double(*d)),
+            points: None,
         },
     })
 }

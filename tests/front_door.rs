@@ -66,6 +66,17 @@ fn library(case: &io::Case) -> Result<geocert::Certified<ops::Answer>, GeomError
             )?;
             ops::classify(&p, &shell, &options)
         }
+        Op::Section => {
+            if case.objects.len() != 2 {
+                return Err(GeomError::CountMismatch {
+                    field: "objects".into(),
+                    expected: "2 objects (the shape, then the cutting plane)".into(),
+                    found: case.objects.len().to_string(),
+                });
+            }
+            let at = |i: usize| shape(&case.objects[i], &format!("objects[{i}]"));
+            ops::section(&at(0)?, &at(1)?, &options)
+        }
         other => Err(GeomError::Unsupported {
             field: "op".into(),
             reason: format!("`{}` is not implemented in this build", other.as_str()),

@@ -310,3 +310,19 @@ fn curve_records_that_are_coming_fit_the_schema() {
     });
     assert!(schemas.validate(&no_curves, index).is_err());
 }
+
+#[test]
+fn section_records_fit_the_schema() {
+    let (schemas, index) = schema();
+    let cases = [
+        r#"{"op": "section", "objects": [{"type": "ellipsoid", "center": [0,0,0], "a": 3, "b": 3, "c": 5}, {"type": "plane", "points": [[16,0,0], [1,5,0], [0,0,1]]}]}"#,
+        r#"{"op": "section", "objects": [{"type": "cylinder", "origin": [0,0,0], "radius": 1, "axis": [0,0,1], "height": [0,1]}, {"type": "plane", "normal": [1,0,0], "d": 0}]}"#,
+        r#"{"op": "section", "objects": [{"type": "polyhedron", "vertices": [[0,0,0],[1,0,0],[0,1,0],[0,0,1]], "faces": [[0,2,1],[0,1,3],[0,3,2],[1,2,3]]}, {"type": "plane", "normal": [0,0,1], "d": "-1/2"}]}"#,
+    ];
+    for case in cases {
+        let mut read = geocert::io::read_cases(case);
+        let r = serde_json::to_value(geocert::io::solve_case(read.remove(0))).unwrap();
+        assert_ne!(r["status"], "error", "{r}");
+        assert!(schemas.validate(&r, index).is_ok(), "{r}");
+    }
+}

@@ -76,6 +76,7 @@ fn curve(c: &CurveAnswer, singular: &[SingularPointOut]) -> CurveOut {
             .map(|v| CurveVertexOut {
                 xyz: v.xyz.clone(),
                 params: v.params.clone(),
+                exact: v.exact.as_ref().map(|e| texts(e)),
             })
             .collect(),
         singular_points: {
@@ -127,6 +128,7 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
                 c.singular_points.iter().map(singular_point).collect();
             r.curves = Some(c.curves.iter().map(|k| curve(k, &singular)).collect());
             r.singular_points = Some(singular);
+            r.conic = c.conic.as_ref().map(super::section_out::conic);
             if !c.points.is_empty() {
                 r.points = Some(c.points.iter().map(point).collect());
             }

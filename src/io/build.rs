@@ -189,6 +189,18 @@ fn linear_object<T: FromNum>(spec: &ObjectSpec) -> Result<LinearObject<T>, Build
 fn plane<T: FromNum>(p: &PlaneSpec) -> Result<Plane<T>, BuildError> {
     let parametric = p.origin.is_some() || p.u.is_some() || p.v.is_some();
     let implicit = p.normal.is_some() || p.d.is_some();
+    if let Some(points) = &p.points {
+        if parametric || implicit {
+            return Err(GeomError::Format {
+                field: "points".into(),
+                message: "a plane is given by origin, u, v, or normal, d, or points, not \
+                          by two of them"
+                    .into(),
+            }
+            .into());
+        }
+        return through_points(points);
+    }
     let missing = |field: &str, form: &str| GeomError::Format {
         field: field.to_string(),
         message: format!("missing field `{field}` of a {form} plane"),
@@ -231,6 +243,27 @@ fn plane<T: FromNum>(p: &PlaneSpec) -> Result<Plane<T>, BuildError> {
         }
         .into()),
     }
+}
+
+/// The plane through three points (OPERATIONS.md §13.1), exactly: `n·x + d = 0` with
+/// `n = (M₁ − M₀) × (M₂ − M₀)`; collinear points are an error naming `points[i]`.
+fn through_points<T: FromNum>(points: &[[Num; 3]; 3]) -> Result<Plane<T>, BuildError> {
+    let mut exact: [[Rational; 3]; 3] = Default::default();
+    for (i, p) in points.iter().enumerate() {
+        let v: Vector3<Rational> = vec3(p, &format!("points[{i}]"))?;
+        exact[i] = [v[0].clone(), v[1].clone(), v[2].clone()];
+    }
+    let plane = crate::ops::section::plane_through_points_exact(&exact)?;
+    let as_t = |q: &Rational, field: &str| T::from_num(&Num::Text(q.to_string()), field);
+    let n = &plane.normal;
+    Ok(Plane::implicit(
+        Vector3::new(
+            as_t(&n[0], "points")?,
+            as_t(&n[1], "points")?,
+            as_t(&n[2], "points")?,
+        ),
+        as_t(&plane.d, "points")?,
+    )?)
 }
 
 /// Validate a polyhedron (exact vertices); errors name fields below the object.

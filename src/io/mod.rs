@@ -9,6 +9,7 @@ pub mod lenient;
 pub mod number;
 pub mod objects;
 pub mod result;
+pub mod section_out;
 pub mod shapes;
 mod solve;
 pub mod stream;

@@ -35,6 +35,8 @@ pub struct PlaneSpec {
     pub v: Option<[Num; 3]>,
     pub normal: Option<[Num; 3]>,
     pub d: Option<Num>,
+    /// Three points the plane passes through (OPERATIONS.md §13.1; not collinear).
+    pub points: Option<[[Num; 3]; 3]>,
 }
 
 /// `line2`: `origin + t·dir` in the plane.

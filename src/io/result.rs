@@ -109,6 +109,9 @@ pub struct CurveVertexOut {
     pub xyz: Vec<f64>,
     /// One array per input object, in input order.
     pub params: Vec<Vec<f64>>,
+    /// The exact vertex (`"p/q"` strings), when it is rational (polyhedron sections).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<Vec<String>>,
 }
 
 /// One curve of `curves[]` (kind `curves`).
@@ -189,6 +192,9 @@ pub struct CaseResult {
     /// Kind `curves`: where branches cross or touch.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub singular_points: Option<Vec<SingularPointOut>>,
+    /// Kind `curves` of a plane ∩ quadric: the exact conic (docs/FORMAT.md "Sections").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub conic: Option<super::section_out::ConicOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorOut>,
     /// `verify`: the verdict on each claimed item.
@@ -234,6 +240,7 @@ impl CaseResult {
             segment: None,
             curves: None,
             singular_points: None,
+            conic: None,
             claims: None,
             missed: None,
             error: Some(ErrorOut {
@@ -262,6 +269,7 @@ impl CaseResult {
             segment: None,
             curves: None,
             singular_points: None,
+            conic: None,
             error: None,
             claims: None,
             missed: None,

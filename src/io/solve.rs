@@ -107,6 +107,17 @@ pub fn answer(case: &Case) -> Result<Certified<Answer>, GeomError> {
                 &options(case)?,
             )
         }
+        Op::Section => {
+            if case.objects.len() != 2 {
+                return Err(GeomError::CountMismatch {
+                    field: "objects".into(),
+                    expected: "2 objects (the shape, then the cutting plane)".into(),
+                    found: case.objects.len().to_string(),
+                });
+            }
+            let shape_at = |i: usize| shape(&case.objects[i], &format!("objects[{i}]"));
+            ops::section(&shape_at(0)?, &shape_at(1)?, &options(case)?)
+        }
         other => Err(GeomError::Unsupported {
             field: "op".into(),
             reason: format!("`{}` is not implemented in this build", other.as_str()),

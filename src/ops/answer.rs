@@ -117,6 +117,8 @@ pub struct CurveVertex {
     /// A proven upper bound of the distance from `xyz` to the true curve (`None` when the
     /// curve is not certified).
     pub bound: Option<f64>,
+    /// The exact vertex, when it is rational (polyhedron sections).
+    pub exact: Option<Vec<Rational>>,
 }
 
 /// One intersection curve: an ordered polyline (for a closed curve the last vertex
@@ -157,6 +159,8 @@ pub struct CurvesAnswer {
     pub singular_points: Vec<SingularPointAnswer>,
     /// Isolated points of the intersection (two spheres touching from outside).
     pub points: Vec<Point>,
+    /// The exact conic of a plane ∩ quadric (OPERATIONS.md §13.2).
+    pub conic: Option<crate::ops::section::Section>,
 }
 
 /// The answer of an operation.

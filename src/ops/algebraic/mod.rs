@@ -34,3 +34,4 @@ pub use line_surface::{
     intersect_line_torus, intersect_line_torus_exact, TorusData,
 };
 pub use quadric::{Conic, QuadricForm};
+pub(crate) use rounding::{correctly_rounded, PRECISION_CAP};

@@ -70,6 +70,12 @@ impl<const D: usize> QuadricForm<D> {
         Ok(q)
     }
 
+    /// `F` from parts already known to be symmetric (a restriction to a plane may be the
+    /// zero form: a plane lying in the quadric).
+    pub(crate) fn from_parts(a: [[Rational; D]; D], b: [Rational; D], c: Rational) -> Self {
+        QuadricForm { a, b, c }
+    }
+
     /// The symmetric matrix `A`.
     pub fn matrix(&self) -> &[[Rational; D]; D] {
         &self.a
@@ -282,6 +288,57 @@ impl QuadricForm<3> {
         }
         let local = diagonal(w, zero(), Rational::from(-1));
         Ok(QuadricForm::in_frame(&local, &p, &[x, y, z]))
+    }
+
+    /// `Σ wₖ ξₖ² + 2β ζ + c₀ = 0` in the docs/FORMAT.md frame of `axis` and `ref` at
+    /// `origin` (`ξ = (ξ, η, ζ)` the local coordinates; §1.6), for any axis: as in
+    /// [`QuadricForm::ellipsoid_in_frame`] only `ṽṽᵀ/|ṽ|²` enters the quadratic part; the
+    /// linear term `βζ = β(Z̃·q)/|Z̃|` is rational only when `|Z̃|` is, else `None`.
+    pub(crate) fn diagonal_in_frame(
+        origin: [f64; 3],
+        axis: [f64; 3],
+        reference: Option<[f64; 3]>,
+        w: [Rational; 3],
+        beta: Rational,
+        c: Rational,
+    ) -> Result<Option<Self>, GeomError> {
+        let p = exact_vec("center", &origin)?;
+        let z = exact_vec("axis", &axis)?;
+        if z.iter().all(|v| v.cmp0() == Ordering::Equal) {
+            return Err(GeomError::ZeroDirection {
+                field: "axis".into(),
+            });
+        }
+        let x = crate::ops::closed_surface::frame_x_unnormalised(&axis, reference.as_ref());
+        if x.iter().all(|v| v.cmp0() == Ordering::Equal) {
+            return Err(GeomError::InvalidValue {
+                field: "ref".into(),
+                reason: "ref is parallel to axis, so it gives no X direction".into(),
+            });
+        }
+        let y: [Rational; 3] = std::array::from_fn(|i| {
+            let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+            Rational::from(&z[j] * &x[k]) - Rational::from(&z[k] * &x[j])
+        });
+        let mut beta_local = zero::<3>();
+        if beta.cmp0() != Ordering::Equal {
+            let zz = dot(&z, &z);
+            let (n, d) = (zz.numer(), zz.denom());
+            if !(n.is_perfect_square() && d.is_perfect_square()) {
+                return Ok(None);
+            }
+            let len = Rational::from((
+                rug::Integer::from(n.sqrt_ref()),
+                rug::Integer::from(d.sqrt_ref()),
+            ));
+            beta_local[2] = beta / len;
+        }
+        let mut wl: [Rational; 3] = std::array::from_fn(|_| Rational::new());
+        for (k, v) in [&x, &y, &z].into_iter().enumerate() {
+            wl[k] = &w[k] / dot(v, v);
+        }
+        let local = diagonal(wl, beta_local, c);
+        Ok(Some(QuadricForm::in_frame(&local, &p, &[x, y, z])))
     }
 
     /// One-sheet hyperboloid `x²/a² + y²/b² − z²/c² = 1` (§1.6).

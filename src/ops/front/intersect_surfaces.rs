@@ -264,6 +264,7 @@ fn curve(c: &CertifiedCurve, params: [bool; 2], index: &[Option<usize>]) -> Curv
             xyz: p.xyz.to_vec(),
             params: split(&p.params, params),
             bound: certified.then(|| c.bounds[i].distance),
+            exact: None,
         })
         .collect();
     let end = |e: ss::CurveEnd| match e {
