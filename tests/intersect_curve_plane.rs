@@ -586,3 +586,55 @@ fn bezier_random_family() {
         }
     }
 }
+
+/// A parabola about +z cut by the plane `y = y₀` (either form of the plane): the
+/// parameter is the rational `y₀` itself, reported exactly (a double), and the point
+/// `(c + y₀²/(2p), c + y₀, c)` correctly rounded; with the domain ends on `y₀` exactly.
+#[test]
+fn parabola_exact_parameter() {
+    let mut rng = Rng::new(16_007);
+    for case in 0..cases() {
+        let c = [rng.small_int(), rng.small_int(), rng.small_int()];
+        let y0 = rng.int(-40, 40) as f64 / 16.0;
+        let p = [0.5, 0.75, 3.0][case % 3];
+        let dom = if case % 2 == 0 {
+            (y0, y0 + 1.0)
+        } else {
+            (y0 - 1.0, y0)
+        };
+        let curve = conic(
+            c,
+            [0.0, 0.0, 1.0],
+            None,
+            CurveShape::Parabola { p },
+            Some(dom),
+        );
+        let pl = if case % 4 < 2 {
+            plane([0.0, 1.0, 0.0], -(c[1] + y0))
+        } else {
+            Shape::Linear(Linear::Double(LinearObject::Plane(
+                Plane::parametric(
+                    Vector3::new(0.0, c[1] + y0, 0.0),
+                    Vector3::new(1.0, 0.0, 0.0),
+                    Vector3::new(0.0, 0.0, 2.0),
+                )
+                .unwrap(),
+            )))
+        };
+        let (_, pts) = solve(&curve, &pl, case % 3 == 0);
+        assert_eq!(pts.len(), 1, "case {case}");
+        let pb = pts[0].param_box.as_ref().unwrap();
+        assert_eq!(pts[0].params[0][0], y0);
+        assert_eq!(pb[0][0], [y0, y0]);
+        let x = Rational::from_f64(c[0]).unwrap()
+            + Rational::from_f64(y0).unwrap().square() / Rational::from_f64(2.0 * p).unwrap();
+        assert_rounds(
+            &Float::with_val(BITS, &x),
+            pts[0].xyz[0],
+            pts[0].xyz_box[0],
+            "x",
+        );
+        assert_eq!(pts[0].xyz[1], c[1] + y0);
+        assert_eq!(pts[0].xyz[2], c[2]);
+    }
+}

@@ -44,7 +44,7 @@ use crate::certify::univariate::{real_roots, Polynomial, RealRoot};
 use crate::curve::analytic::{Analytic, Shape as CurveShape};
 use crate::curve::Curve;
 use crate::geom::Plane as LinearPlane;
-use crate::num::round::Rounded;
+use crate::num::round::{round_rational, Rounded};
 use crate::num::{MpfrInterval, Real};
 use crate::ops::answer::{Answer, ExactPoint, Point};
 use crate::ops::closed_surface::frame_x_unnormalised;
@@ -307,6 +307,21 @@ fn compare_y(s: &mut RealRoot, sy: Ordering, fy: &Polynomial, yy: &Rational, e: 
     }
 }
 
+/// The parabola's parameter `y = Y/|Ỹ|` when it is rational: at a rational `s` with
+/// `Y²/|Ỹ|²` the square of a rational (Ziv's loop never ends on a value that is a double).
+fn exact_y(s: &RealRoot, sy: Ordering, fy: &Polynomial, yy: &Rational) -> Option<Rational> {
+    if sy == Ordering::Equal {
+        return Some(Rational::new());
+    }
+    let y2 = fy.eval(s.exact()?).square() / yy;
+    let (n, d) = y2.into_numer_denom();
+    if !n.is_perfect_square() || !d.is_perfect_square() {
+        return None;
+    }
+    let y = Rational::from((n.sqrt(), d.sqrt()));
+    Some(if sy == Ordering::Less { -y } else { y })
+}
+
 /// The correctly rounded curve parameters of a hit inside the curve's domain (an arc
 /// or a long domain may pass a point more than once); `None`: Ziv's loop reached its
 /// cap.
@@ -369,10 +384,9 @@ fn curve_params(
             if !ok {
                 return Some(vec![]);
             }
-            let r = if hit.sy == Ordering::Equal {
-                Rounded::exact(0.0)
-            } else {
-                correctly_rounded(|bits| local.param(hit, &mut s, bits))?
+            let r = match exact_y(&hit.s, hit.sy, fy, &yy) {
+                Some(y) => round_rational(&y),
+                None => correctly_rounded(|bits| local.param(hit, &mut s, bits))?,
             };
             Some(vec![r])
         }
