@@ -8,6 +8,9 @@
 //! points, decided exactly), curves lying in the plane, arcs, magnitudes 1e±100.
 //! `GEOCERT_CURVE_PLANE_CASES` sets the number of cases per family (default 200).
 
+// Coordinates are compared by index against several parallel arrays.
+#![allow(clippy::needless_range_loop)]
+
 use geocert::curve::frame::Frame;
 use geocert::curve::{Analytic, AnyCurve3, Bezier, Shape as CurveShape};
 use geocert::geom::Plane;
@@ -20,6 +23,9 @@ use rug::ops::Pow;
 use rug::{Float, Rational};
 
 const BITS: u32 = 300;
+
+/// A curve's point at a parameter, at 300 bits.
+type PointAt = Box<dyn Fn(&Float) -> [Float; 3]>;
 
 fn cases() -> usize {
     std::env::var("GEOCERT_CURVE_PLANE_CASES")
@@ -286,7 +292,7 @@ fn tangent_and_one_ulp_off() {
         assert_eq!(pts[0].multiplicity, 2);
         assert!(pts[0].tangent);
         // The touching point: centre − side·r·(3, 4)/5, exactly when representable.
-        let t = [3.0, 4.0].map(|k| f(c[0]) * 0 + f(k) / 5 * f(r) * (-side));
+        let t = [3.0, 4.0].map(|k| f(k) / 5 * f(r) * (-side));
         assert_rounds(&(f(c[0]) + &t[0]), pts[0].xyz[0], pts[0].xyz_box[0], "x");
         assert_rounds(&(f(c[1]) + &t[1]), pts[0].xyz[1], pts[0].xyz_box[1], "y");
         // One ulp towards the centre: two points; away: none.
@@ -373,7 +379,7 @@ fn hyperbola_parabola_family() {
         let (a, b) = (0.5 + rng.unit().abs(), 0.5 + rng.unit().abs());
         let parabola = case % 3 == 0;
         let sigma = if case % 3 == 1 { -1.0 } else { 1.0 };
-        let (shape, point_at): (CurveShape, Box<dyn Fn(&Float) -> [Float; 3]>) = if parabola {
+        let (shape, point_at): (CurveShape, PointAt) = if parabola {
             let p = a;
             let fr2 = fr.clone();
             (
@@ -450,8 +456,7 @@ fn bezier_at(pts: &[[f64; 3]], t: &Rational) -> [Rational; 3] {
             .windows(2)
             .map(|w| {
                 std::array::from_fn(|i| {
-                    Rational::from(&w[0][i] * (Rational::from(1) - t))
-                        + Rational::from(&w[1][i] * t)
+                    (&w[0][i] * (Rational::from(1) - t)) + Rational::from(&w[1][i] * t)
                 })
             })
             .collect();
