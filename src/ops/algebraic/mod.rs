@@ -14,9 +14,11 @@
 //! double root and two close crossings are two proven simple ones. Magnitudes from
 //! 1e-300 to 1e300 are handled exactly (nothing overflows in rationals).
 
+mod bezier_plane;
 mod bivariate;
 mod conic;
 mod conic_conic;
+mod conic_plane;
 mod exact;
 mod foot2;
 mod line;

@@ -382,6 +382,25 @@ pub(crate) fn line_surface(
     Some(line_cut_answer(&line, cut, params, line_first))
 }
 
+/// A space curve against a plane of the linear kernel, exactly where the restriction
+/// is algebraic: the framed conics ([`super::conic_plane`]); `None` for other pairs.
+pub(crate) fn curve_plane(
+    plane: &Linear,
+    curve: &crate::curve::AnyCurve3,
+    curve_first: bool,
+) -> Option<Certified<Answer>> {
+    let plane = super::conic_plane::exact_plane(plane)?;
+    match curve {
+        crate::curve::AnyCurve3::Analytic(c) => {
+            super::conic_plane::conic_plane(c, &plane, curve_first)
+        }
+        crate::curve::AnyCurve3::Bezier(b) => {
+            super::bezier_plane::bezier_plane(b, &plane, curve_first)
+        }
+        _ => None,
+    }
+}
+
 /// A plane conic with the inverse of its parametrisation (`None`: implicit).
 pub(super) struct PlaneConic {
     pub(super) form: QuadricForm<2>,

@@ -53,6 +53,8 @@ fn algebraic(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError
     match (a, b) {
         (Shape::Linear(l), Shape::Surface(s)) => pairs::line_surface(l, s, true).map(Ok),
         (Shape::Surface(s), Shape::Linear(l)) => pairs::line_surface(l, s, false).map(Ok),
+        (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false).map(Ok),
+        (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true).map(Ok),
         _ => pairs::plane_pair(a, b),
     }
 }

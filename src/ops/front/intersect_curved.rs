@@ -14,7 +14,7 @@ use crate::ops::intersect::{
     intersect_curve2_curve2, intersect_curve_surface, intersect_three_surfaces,
 };
 use crate::ops::options::Options;
-use crate::ops::shape::Shape;
+use crate::ops::shape::{Linear, Shape};
 use crate::ops::space_curves::intersect_curve_curve;
 use crate::surface::AnySurface;
 
@@ -68,10 +68,44 @@ pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Ans
         return r;
     }
     match (a, b) {
-        (Shape::Surface(s), other) => curve_surface(s, other, 1, true, opts),
-        (other, Shape::Surface(s)) => curve_surface(s, other, 0, false, opts),
+        (Shape::Surface(s), other) => curve_surface(s, other, 1, true, true, opts),
+        (other, Shape::Surface(s)) => curve_surface(s, other, 0, false, true, opts),
+        (Shape::Linear(l), other) if l.type_name() == "plane" => {
+            curve_plane(l, other, 1, true, opts)
+        }
+        (other, Shape::Linear(l)) if l.type_name() == "plane" => {
+            curve_plane(l, other, 0, false, opts)
+        }
         _ => space_curves(a, b, opts),
     }
+}
+
+/// A space curve against a plane of the linear kernel, numerically (the pairs the exact
+/// solver does not take, such as the helix): the plane is cut to a rectangle whose image
+/// holds the curve's certified box with a margin
+/// ([`super::intersect_surfaces::bounded_plane`]), so every common point lies inside it
+/// and `complete` keeps its meaning; an implicit plane reports no parameters.
+fn curve_plane(
+    plane: &Linear,
+    curve_shape: &Shape,
+    curve_at: usize,
+    plane_first: bool,
+    opts: &Options,
+) -> Result<Certified<Answer>, GeomError> {
+    let curve = curve3(curve_shape, None)
+        .map_err(|e| e.at(&field(curve_at)))?
+        .ok_or_else(|| unsupported(&field(curve_at), "expected a space curve"))?;
+    let plane_at = 1 - curve_at;
+    let op = super::intersect_surfaces::bounded_plane(plane, &curve_box(&curve))
+        .map_err(|e| e.at(&field(plane_at)))?;
+    curve_surface(
+        &op.surface,
+        curve_shape,
+        curve_at,
+        plane_first,
+        op.params,
+        opts,
+    )
 }
 
 fn plane_curves(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Answer>, GeomError> {
@@ -140,6 +174,7 @@ fn curve_surface(
     curve_shape: &Shape,
     curve_at: usize,
     surface_first: bool,
+    surface_params: bool,
     opts: &Options,
 ) -> Result<Certified<Answer>, GeomError> {
     if matches!(curve_shape, Shape::Surface(_)) {
@@ -175,7 +210,20 @@ fn curve_surface(
         })
     };
     let sizes: &[usize] = if surface_first { &[2, 1] } else { &[1, 2] };
-    Ok(points::points(c, sizes, None))
+    let mut r = points::points(c, sizes, None);
+    if !surface_params {
+        // An implicit plane has no parameters of its own.
+        let at = usize::from(!surface_first);
+        if let Answer::Points(ps) = &mut r.value {
+            for p in ps {
+                p.params[at].clear();
+                if let Some(b) = &mut p.param_box {
+                    b[at].clear();
+                }
+            }
+        }
+    }
+    Ok(r)
 }
 
 /// Three surfaces (§7.2).

@@ -26,9 +26,9 @@ use crate::surface::AnySurface;
 
 /// One operand: the surface and whether its parameters are reported (an implicit
 /// plane has none).
-struct Operand {
-    surface: AnySurface,
-    params: bool,
+pub(crate) struct Operand {
+    pub(crate) surface: AnySurface,
+    pub(crate) params: bool,
 }
 
 /// Two shapes of which each is a surface or a plane and at least one a surface;
@@ -77,7 +77,7 @@ fn intersect(a: &Operand, b: &Operand, opts: &Options) -> Result<Certified<Answe
 
 /// The plane cut to a rectangle around `bound` (module doc); the parameters are those
 /// of a parametric plane's own `u`, `v`, or of an orthonormal frame of an implicit one.
-fn bounded_plane(l: &Linear, bound: &[Interval; 3]) -> Result<Operand, GeomError> {
+pub(crate) fn bounded_plane(l: &Linear, bound: &[Interval; 3]) -> Result<Operand, GeomError> {
     let LinearObject::Plane(p) = l.doubles()? else {
         return Err(GeomError::Unsupported {
             field: "type".into(),
