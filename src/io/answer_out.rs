@@ -88,7 +88,9 @@ fn curve(c: &CurveAnswer, singular: &[SingularPointOut]) -> CurveOut {
                 })
                 .collect();
             at.dedup();
-            at.iter().filter_map(|&i| singular.get(i).cloned()).collect()
+            at.iter()
+                .filter_map(|&i| singular.get(i).cloned())
+                .collect()
         },
         ends: c.ends.map(end),
         status: c.status.as_str(),
