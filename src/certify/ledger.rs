@@ -12,7 +12,9 @@ use super::deflate::DoubleRoot;
 use super::krawczyk::VerifiedRoot;
 use super::level::{box_to_f64, box_to_mpfr, levels, CertInterval};
 
-type IBoxOf<I> = Vec<I>;
+/// What replaces a singular box in [`Ledger::replace_singular`]: two verified roots,
+/// or a singular box (its enclosure and double root).
+pub(super) type Replacement<I> = Result<Vec<VerifiedRoot<I>>, (Vec<I>, DoubleRoot<I>)>;
 use super::{Options, Root, Solutions, UndecidedBox};
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::num::MpfrInterval;
@@ -190,7 +192,7 @@ impl Ledger {
     pub(super) fn replace_singular<I: CertInterval>(
         &mut self,
         i: usize,
-        by: Result<Vec<VerifiedRoot<I>>, (IBoxOf<I>, DoubleRoot<I>)>,
+        by: Replacement<I>,
         bits: u32,
     ) {
         self.found.remove(i);
