@@ -125,7 +125,7 @@ fn circle_pairs_near_tangency() {
         let angle = if i % 3 == 0 {
             0.0
         } else {
-            6.283 * 0.5 * (g.unit() + 1.0)
+            std::f64::consts::PI * (g.unit() + 1.0)
         };
         let b = [a[0] + d * angle.cos(), a[1] + d * angle.sin()];
         run(&Circles {
