@@ -364,7 +364,7 @@ fn judge_nearest(
 fn generate(g: &mut Rng, i: usize, three_d: bool, arc: bool) -> (Conic, Vec<f64>) {
     let s = 10f64.powi(g.int(-6, 6) as i32);
     let a = s * (0.2 + 3.0 * u01(g));
-    let b = if i % 5 == 0 {
+    let b = if i.is_multiple_of(5) {
         a
     } else {
         s * (0.2 + 3.0 * u01(g))
@@ -391,7 +391,7 @@ fn generate(g: &mut Rng, i: usize, three_d: bool, arc: bool) -> (Conic, Vec<f64>
         domain,
     };
     // local point: random, or near the evolute ((a²−b²)/a cos³θ, (b²−a²)/b sin³θ)
-    let (lx, ly) = if i % 3 == 0 && a != b {
+    let (lx, ly) = if i.is_multiple_of(3) && a != b {
         let th = 6.3 * u01(g);
         let gap = 10f64.powi(-(g.int(3, 15) as i32)) * if g.coin() { 1.0 } else { -1.0 };
         let k = 1.0 + gap;
