@@ -11,6 +11,10 @@ use super::boxes;
 use super::deflate::DoubleRoot;
 use super::krawczyk::VerifiedRoot;
 use super::level::{box_to_f64, box_to_mpfr, levels, CertInterval};
+
+/// What replaces a singular box in [`Ledger::replace_singular`]: two verified roots,
+/// or a singular box (its enclosure and double root).
+pub(super) type Replacement<I> = Result<Vec<VerifiedRoot<I>>, (Vec<I>, DoubleRoot<I>)>;
 use super::{Options, Root, Solutions, UndecidedBox};
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::num::MpfrInterval;
@@ -41,6 +45,8 @@ struct Found {
     status: Status,
     bits: u32,
     perturbation: Option<f64>,
+    /// A singular box already tried against its proven neighbours ([`Ledger::untried_singular`]).
+    tried: bool,
 }
 
 impl Found {
@@ -135,6 +141,7 @@ impl Ledger {
             status: Status::Verified,
             bits,
             perturbation: None,
+            tried: false,
         };
         self.bits = self.bits.max(bits);
         for i in 0..self.found.len() {
@@ -175,13 +182,134 @@ impl Ledger {
             status: Status::VerifiedSingular,
             bits,
             perturbation: Some(d.perturbation()),
+            tried: false,
         });
+    }
+
+    /// The first singular box not yet tried that has verified roots near it (meeting it
+    /// grown by its own width on each side): its index and the hull of it and them —
+    /// the region in which the cluster tests may separate a pair of close roots of
+    /// which subdivision proved one and called the other's neighbourhood singular.
+    pub(super) fn untried_singular(&mut self) -> Option<(usize, Vec<MpfrInterval>)> {
+        loop {
+            let i = self
+                .found
+                .iter()
+                .position(|f| f.status == Status::VerifiedSingular && !f.tried)?;
+            self.found[i].tried = true;
+            let hull = self.with_nearby_roots(&self.found[i].enclosure.clone());
+            if hull != self.found[i].enclosure {
+                return Some((i, hull));
+            }
+        }
+    }
+
+    /// Replace entry `i` (a singular box) by the two roots or the singular box that the
+    /// cluster tests proved on a region containing it.
+    pub(super) fn replace_singular<I: CertInterval>(
+        &mut self,
+        i: usize,
+        by: Replacement<I>,
+        bits: u32,
+    ) {
+        self.found.remove(i);
+        match by {
+            Ok(roots) => {
+                for r in roots {
+                    self.root(r, bits);
+                }
+            }
+            Err((enclosure, d)) => {
+                self.singular(&enclosure, &d, bits);
+                if let Some(last) = self.found.last_mut() {
+                    last.tried = true;
+                }
+            }
+        }
+    }
+
+    /// `hull` grown to hold the enclosures of the verified roots that meet it grown by
+    /// its own width on each side: the neighbourhood in which a cluster may be one half
+    /// of a pair of close roots whose other half is already proven.
+    pub(super) fn with_nearby_roots(&self, hull: &[MpfrInterval]) -> Vec<MpfrInterval> {
+        let near = boxes::inflate(hull, 1.0, 0.0);
+        self.found
+            .iter()
+            .filter(|f| f.status == Status::Verified && boxes::meets(&f.enclosure, &near))
+            .fold(hull.to_vec(), |h, f| boxes::hull(&h, &f.enclosure))
+    }
+
+    /// Make the reported boxes pairwise disjoint with every root counted once
+    /// (CERTIFICATION.md "Tangency and near-tangency"). A singular box `S` holds at most
+    /// two roots counted with multiplicity: two verified roots inside it are all of its
+    /// roots, so `S` is dropped; one verified root inside it is one of them, so that box
+    /// is dropped and `S` (which counts it) stays; a singular box inside another is
+    /// counted by the outer one. Boxes that meet without either of these containments
+    /// prove nothing about each other: their hull becomes undecided.
+    fn reconcile(&mut self) {
+        let mut i = 0;
+        while i < self.found.len() {
+            if self.found[i].status != Status::VerifiedSingular {
+                i += 1;
+                continue;
+            }
+            let s = self.found[i].enclosure.clone();
+            let others: Vec<usize> = (0..self.found.len())
+                .filter(|&j| j != i && boxes::meets(&self.found[j].enclosure, &s))
+                .collect();
+            if others.is_empty() {
+                i += 1;
+                continue;
+            }
+            let drop: Vec<usize> = if others
+                .iter()
+                .any(|&j| boxes::is_subset(&s, &self.found[j].enclosure))
+            {
+                // inside a verified box (one root) or a singular one (which counts it)
+                vec![i]
+            } else {
+                self.drop_around(i, &others)
+            };
+            let mut drop = drop;
+            drop.sort_unstable();
+            for &j in drop.iter().rev() {
+                self.found.remove(j);
+            }
+            // the list changed: start over (each pass removes at least one entry)
+            i = 0;
+        }
+    }
+
+    /// [`Self::reconcile`] for the singular box `i` and the boxes `others` that meet it
+    /// (none of which holds it): which entries to drop.
+    fn drop_around(&mut self, i: usize, others: &[usize]) -> Vec<usize> {
+        let s = self.found[i].enclosure.clone();
+        let inside = |f: &Found| boxes::is_subset(&f.enclosure, &s);
+        let all_inside = others.iter().all(|&j| inside(&self.found[j]));
+        let simple = others
+            .iter()
+            .filter(|&&j| self.found[j].status == Status::Verified)
+            .count();
+        if all_inside && simple == others.len() && simple >= 2 {
+            vec![i]
+        } else if all_inside {
+            others.to_vec()
+        } else {
+            let hull = others
+                .iter()
+                .fold(s.clone(), |h, &j| boxes::hull(&h, &self.found[j].enclosure));
+            self.undecided(&hull, "close roots could not be separated or counted");
+            let mut all = others.to_vec();
+            all.push(i);
+            all
+        }
     }
 
     /// The result of a finished run over the domain `dom`: the roots found inside it,
     /// those straddling its boundary, and the certificate (`complete` exactly when
     /// nothing is undecided; the status the weakest of the roots').
-    pub(super) fn finish(self, dom: &[MpfrInterval]) -> Certified<Solutions> {
+    pub(super) fn finish(mut self, dom: &[MpfrInterval]) -> Certified<Solutions> {
+        self.reconcile();
         let mut roots = Vec::new();
         let mut boundary_roots = Vec::new();
         for f in &self.found {

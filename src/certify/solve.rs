@@ -43,6 +43,7 @@ pub fn solve<S: System>(
         .collect();
     let mut ledger = Ledger::new(opts);
     decide(sys, vec![dom.clone()], 0, &mut ledger);
+    separate(sys, &mut ledger);
     Ok(ledger.finish(&dom))
 }
 
@@ -58,6 +59,10 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
         let hull = cluster[1..]
             .iter()
             .fold(cluster[0].clone(), |h, x| boxes::hull(&h, x));
+        // A near-double root whose other half subdivision already proved: the cluster
+        // tests must see both roots, or they call the one they see singular (a singular
+        // box over a verified one, one root counted twice: issue 14).
+        let hull = ledger.with_nearby_roots(&hull);
         if !ledger.take(CLUSTER_COST) {
             ledger.undecided(&hull, ledger.spent());
             continue;
@@ -99,6 +104,45 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
         } else {
             let reason = format!("precision cap of {} bits reached", ledger.levels[top - 1]);
             ledger.undecided(&hull, &reason);
+        }
+    }
+}
+
+/// Singular boxes next to proven roots, tried again together with them (issue 14: a
+/// cluster holding one of two roots 1e-5 apart, whose other root subdivision had
+/// proven, came back `verified_singular` at every precision, since its count region
+/// held only one root): the cluster tests on the hull of both, at rising precision
+/// (CERTIFICATION.md: raise the precision to separate close roots before falling back
+/// to a singular box). Two proven roots replace the singular box; a singular verdict on
+/// the hull (which then holds the proven root, counted by it) replaces it as well;
+/// otherwise it stays, and [`Ledger`] reconciles what overlaps.
+fn separate<S: System>(sys: &S, ledger: &mut Ledger) {
+    while let Some((i, hull)) = ledger.untried_singular() {
+        let mut singular = None;
+        // the hull, then grown (a count region may cover a rounder box more easily)
+        'grow: for grow in [0.0] {
+            let region = boxes::inflate(&hull, grow, 0.0);
+            for l in 0..ledger.levels.len() {
+                let bits = ledger.levels[l];
+                match cluster_at(sys, &region, bits) {
+                    Some(Decision::TwoRoots(roots)) => {
+                        ledger.replace_singular(i, Ok(roots), bits);
+                        singular = None;
+                        break 'grow;
+                    }
+                    Some(Decision::Singular(e, d)) => {
+                        singular.get_or_insert((e, d, bits));
+                    }
+                    // `NoRoot` cannot hold (a proven root is inside): nothing concluded
+                    _ => {}
+                }
+            }
+            if singular.is_some() {
+                break;
+            }
+        }
+        if let Some((e, d, bits)) = singular {
+            ledger.replace_singular::<MpfrInterval>(i, Err((e, d)), bits);
         }
     }
 }

@@ -6,7 +6,7 @@
 //! analysis and escalation), or the box budget is spent.
 
 use super::boxes::{self, IBox};
-use super::krawczyk::{excluded_by_image, image, krawczyk, tighten, Krawczyk, VerifiedRoot};
+use super::krawczyk::{excluded_by_image, image, krawczyk, narrow_unique, Krawczyk, VerifiedRoot};
 use super::ledger::Ledger;
 use super::level::CertInterval;
 use super::system::System;
@@ -88,7 +88,7 @@ fn krawczyk_test<S: System, I: CertInterval>(
     match verdict {
         Krawczyk::Unique(k) => {
             // exactly one root in `region ⊇ x`; it lies in `x` or not
-            let enclosure = tighten(sys, k, 4);
+            let enclosure = narrow_unique(sys, &region, k);
             if boxes::meets(&enclosure, &x) {
                 ledger.root(VerifiedRoot { region, enclosure }, bits);
             } else {
