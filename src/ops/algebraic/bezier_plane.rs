@@ -79,77 +79,78 @@ fn round_at(
     None
 }
 
-/// A Bézier curve against a plane, exactly; `None` when a coordinate cannot be rounded
-/// within the budget.
-pub(crate) fn bezier_plane(
-    curve: &Bezier<3>,
-    plane: &ExactPlane,
-    curve_first: bool,
-) -> Option<Certified<Answer>> {
-    let q = |v: f64| Rational::from_f64(v).unwrap_or_default();
-    let pts: Vec<[Rational; 3]> = curve.points().iter().map(|p| p.map(q)).collect();
-    let w: Vec<Rational> = match curve.weights() {
-        Some(w) => w.iter().map(|&x| q(x)).collect(),
-        None => vec![Rational::from(1); pts.len()],
-    };
-    let dist: Vec<Rational> = pts
-        .iter()
-        .zip(&w)
-        .map(|(p, wi)| (dot(&plane.n, p) - &plane.h) * wi)
-        .collect();
-    let n = bernstein(&dist);
-    let bits = n.max_bits();
-    if n.is_zero() {
-        let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
-        r.reason = Some("the curve lies in the plane".into());
-        return Some(r);
-    }
-    let den = bernstein(&w);
-    let nums: Vec<Polynomial> = (0..3)
-        .map(|k| {
-            bernstein(
-                &pts.iter()
+/// A Bézier curve with its exact data: `X(t) = nums(t)/den(t)` in the power basis,
+/// `den = Σ wᵢBᵢⁿ > 0` (OPERATIONS.md §1.5), the domain's double ends as rationals.
+pub(super) struct ExactBezier {
+    pub(super) den: Polynomial,
+    pub(super) nums: Vec<Polynomial>,
+    pub(super) domain: (Rational, Rational),
+}
+
+impl ExactBezier {
+    pub(super) fn new<const D: usize>(curve: &Bezier<D>) -> ExactBezier {
+        let q = |v: f64| Rational::from_f64(v).unwrap_or_default();
+        let pts: Vec<[Rational; D]> = curve.points().iter().map(|p| p.map(q)).collect();
+        let w: Vec<Rational> = match curve.weights() {
+            Some(w) => w.iter().map(|&x| q(x)).collect(),
+            None => vec![Rational::from(1); pts.len()],
+        };
+        let nums = (0..D)
+            .map(|k| {
+                let c: Vec<Rational> = pts
+                    .iter()
                     .zip(&w)
                     .map(|(p, wi)| Rational::from(&p[k] * wi))
-                    .collect::<Vec<_>>(),
-            )
-        })
-        .collect();
-    // A parametric plane's (a, b) = (A·(x − o), B·(x − o)), A, B from its Gram system.
-    let plane_nums: Vec<Polynomial> = match &plane.frame {
-        Some([o, u, v]) => {
-            let (uu, uv, vv) = (dot(u, u), dot(u, v), dot(v, v));
-            let det = Rational::from(&uu * &vv) - Rational::from(&uv * &uv);
-            let comb = |c1: &Rational, e1: &[Rational; 3], c2: &Rational, e2: &[Rational; 3]| {
-                let g: [Rational; 3] = std::array::from_fn(|i| {
-                    (Rational::from(c1 * &e1[i]) - Rational::from(c2 * &e2[i])) / &det
-                });
-                let mut p = den.scale(&-dot(&g, o));
-                for (k, num) in nums.iter().enumerate() {
-                    p = &p + &num.scale(&g[k]);
-                }
-                p
-            };
-            vec![comb(&vv, u, &uv, v), comb(&uu, v, &uv, u)]
+                    .collect();
+                bernstein(&c)
+            })
+            .collect();
+        let (lo, hi) = curve.domain();
+        ExactBezier {
+            den: bernstein(&w),
+            nums,
+            domain: (q(lo), q(hi)),
         }
-        None => Vec::new(),
-    };
-    let (lo, hi) = curve.domain();
-    let roots = real_roots_in(&n, &q(lo), &q(hi)).ok()?;
+    }
+
+    /// `W(t)·(a·X(t) + c)`: an affine function of the point, times the denominator.
+    pub(super) fn affine(&self, a: &[Rational], c: &Rational) -> Polynomial {
+        let mut p = self.den.scale(c);
+        for (num, ak) in self.nums.iter().zip(a) {
+            p = &p + &num.scale(ak);
+        }
+        p
+    }
+}
+
+/// The points of the curve at the roots of `n` in its domain that `keep` accepts, the
+/// other object's parameters `flat_nums/den` (correctly rounded like the coordinates);
+/// `None` when a number cannot be rounded within the budget.
+pub(super) fn bezier_points(
+    c: &ExactBezier,
+    n: &Polynomial,
+    flat_nums: &[Polynomial],
+    mut keep: impl FnMut(&mut RealRoot) -> bool,
+    curve_first: bool,
+) -> Option<Vec<Point>> {
+    let roots = real_roots_in(n, &c.domain.0, &c.domain.1).ok()?;
     let mut points = Vec::new();
-    for t in roots {
+    for mut t in roots {
+        if !keep(&mut t) {
+            continue;
+        }
         let mut xyz = Vec::new();
         let mut exact = Vec::new();
-        for num in &nums {
-            let (r, e) = round_at(&t, num, &den)?;
+        for num in &c.nums {
+            let (r, e) = round_at(&t, num, &c.den)?;
             xyz.push(r);
             exact.push(e);
         }
         let tr = t.rounded();
         let mut ab = Vec::new();
         let mut ab_exact = Vec::new();
-        for num in &plane_nums {
-            let (r, e) = round_at(&t, num, &den)?;
+        for num in flat_nums {
+            let (r, e) = round_at(&t, num, &c.den)?;
             ab.push(r);
             ab_exact.push(e);
         }
@@ -189,6 +190,40 @@ pub(crate) fn bezier_plane(
             ..Default::default()
         });
     }
+    Some(points)
+}
+
+/// A Bézier curve against a plane, exactly; `None` when a coordinate cannot be rounded
+/// within the budget.
+pub(crate) fn bezier_plane(
+    curve: &Bezier<3>,
+    plane: &ExactPlane,
+    curve_first: bool,
+) -> Option<Certified<Answer>> {
+    let c = ExactBezier::new(curve);
+    let n = c.affine(&plane.n, &-plane.h.clone());
+    let bits = n.max_bits();
+    if n.is_zero() {
+        let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
+        r.reason = Some("the curve lies in the plane".into());
+        return Some(r);
+    }
+    // A parametric plane's (a, b) = (A·(x − o), B·(x − o)), A, B from its Gram system.
+    let plane_nums: Vec<Polynomial> = match &plane.frame {
+        Some([o, u, v]) => {
+            let (uu, uv, vv) = (dot(u, u), dot(u, v), dot(v, v));
+            let det = Rational::from(&uu * &vv) - Rational::from(&uv * &uv);
+            let comb = |c1: &Rational, e1: &[Rational; 3], c2: &Rational, e2: &[Rational; 3]| {
+                let g: [Rational; 3] = std::array::from_fn(|i| {
+                    (Rational::from(c1 * &e1[i]) - Rational::from(c2 * &e2[i])) / &det
+                });
+                c.affine(&g, &-dot(&g, o))
+            };
+            vec![comb(&vv, u, &uv, v), comb(&uu, v, &uv, u)]
+        }
+        None => Vec::new(),
+    };
+    let points = bezier_points(&c, &n, &plane_nums, |_| true, curve_first)?;
     Some(Certified::exact(
         Answer::from_points(points),
         Arithmetic::Rational,

@@ -14,6 +14,7 @@
 //! double root and two close crossings are two proven simple ones. Magnitudes from
 //! 1e-300 to 1e300 are handled exactly (nothing overflows in rationals).
 
+mod bezier_line2;
 mod bezier_plane;
 mod bivariate;
 mod conic;

@@ -471,6 +471,9 @@ pub(super) fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
 /// Two plane shapes of which one is a conic and the other a 2D line, segment or
 /// conic; `None` for other pairs.
 pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
+    if let Some(r) = bezier_line(a, b) {
+        return Some(Ok(r));
+    }
     if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
         let cut = intersect_line_quadric_exact(&line.o, &line.d, &conic.form);
         let params = |h: &LineHit<2>, b: &[Interval; 2]| conic.line_hit(&line, h, b);
@@ -483,6 +486,17 @@ pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer
     }
     let (ca, cb) = (plane_conic(a)?, plane_conic(b)?);
     Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_answer(&ca, &cb, cut)))
+}
+
+/// A 2D line or segment against a Bézier curve, in either order
+/// ([`super::bezier_line2`]); `None` for other pairs or when not decided exactly.
+fn bezier_line(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
+    let (line, curve, curve_first) = match (a, b) {
+        (Shape::Curve2(AnyCurve2::Bezier(c)), l) => (line2(l)?, c, true),
+        (l, Shape::Curve2(AnyCurve2::Bezier(c))) => (line2(l)?, c, false),
+        _ => return None,
+    };
+    super::bezier_line2::bezier_line2(curve, &line.o, &line.d, line.range.as_ref(), curve_first)
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {
