@@ -124,9 +124,9 @@ fn known_roots_tangency_and_ulp() {
             assert_eq!(p.params[0][0], t);
             let x = bezier_at(&pts, &q(t));
             let e = p.exact.as_ref().expect("exact values");
-            for i in 0..2 {
-                assert_eq!(p.xyz[i], round(&x[i]), "case {case} xyz[{i}]");
-                assert_eq!(e.xyz[i], x[i]);
+            for (i, xi) in x.iter().enumerate().take(2) {
+                assert_eq!(p.xyz[i], round(xi), "case {case} xyz[{i}]");
+                assert_eq!(e.xyz[i], *xi);
             }
             let s = (x[0].clone() - q(ox)) / q(dx);
             assert_eq!(p.params[1][0], round(&s), "case {case} s");

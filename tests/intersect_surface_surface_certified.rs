@@ -315,12 +315,8 @@ fn tangent_spheres_touch_at_one_proven_point_and_perturbations_are_never_wrong()
         assert!(r.value.curves.is_empty(), "{what}");
         assert_eq!(r.value.singular_points.len(), 1, "{what}");
         let p = &r.value.singular_points[0];
-        for j in 0..3 {
-            let b = &p.xyz_box[j];
-            assert!(
-                q(b.lo()) <= touch[j] && touch[j] <= q(b.hi()),
-                "{what}: {j} {b:?}"
-            );
+        for (j, (b, t)) in p.xyz_box.iter().zip(&touch).enumerate() {
+            assert!(q(b.lo()) <= *t && *t <= q(b.hi()), "{what}: {j} {b:?}");
         }
         // ±1e-9 on the second radius: a tiny circle (+) or nothing (−) — for internal
         // tangency too, the grown inner sphere pokes out — and never a wrong proof

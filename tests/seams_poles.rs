@@ -310,9 +310,10 @@ fn the_command_line_decides_shared_ends() {
         .map(|l| serde_json::from_str(l).expect("JSON"))
         .collect();
     assert_eq!(lines.len(), 2);
-    // segment2 × bezier2: (t, s) = (0, 0) exactly and (0.75, 0.75)
+    // segment2 × bezier2: (t, s) = (0, 0) exactly and (0.75, 0.75), decided exactly
+    // (ops::algebraic::bezier_line2)
     let first = &lines[0];
-    assert_eq!(first["status"], "verified", "{first}");
+    assert_eq!(first["status"], "exact", "{first}");
     assert_eq!(first["complete"], true);
     let pts = first["points"].as_array().expect("points");
     assert_eq!(pts.len(), 2, "{first}");

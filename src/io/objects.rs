@@ -68,6 +68,7 @@ pub struct PolyhedronSpec {
 
 /// One object of a case, by its `type`.
 #[derive(Debug, Clone, PartialEq)]
+#[allow(clippy::large_enum_variant)] // parsed once per object; boxing buys nothing
 pub enum ObjectSpec {
     Line(LineSpec),
     Segment(SegmentSpec),

@@ -63,7 +63,7 @@ fn operand(shape: &Shape, bound: &[Interval; 3], i: usize) -> Option<Result<Oper
 /// The options of the surface operation from the front door's.
 pub(crate) fn surface_options(opts: &Options) -> ss::Options {
     ss::Options {
-        precision: opts.precision.clone(),
+        precision: opts.precision,
         chord_tolerance: opts.chord_tolerance,
         certify: opts.certify(),
         ..ss::Options::default()

@@ -103,10 +103,9 @@ fn radical_plane(f1: &QuadricForm<3>, f2: &QuadricForm<3>) -> Option<Radical> {
     if !proportional {
         return None;
     }
-    let normal: [Rational; 3] = std::array::from_fn(|k| {
-        Rational::from(&f1.linear()[k] - Rational::from(&lambda * &f2.linear()[k]))
-    });
-    let d = Rational::from(f1.constant() - Rational::from(&lambda * f2.constant())) / 2u32;
+    let normal: [Rational; 3] =
+        std::array::from_fn(|k| &f1.linear()[k] - Rational::from(&lambda * &f2.linear()[k]));
+    let d = (f1.constant() - Rational::from(&lambda * f2.constant())) / 2u32;
     Some(if normal.iter().all(|x| *x == 0) {
         if d == 0 {
             Radical::Same

@@ -7,7 +7,7 @@
 //! `q²r`). A reported value is the exact rational when it is one, else it is irrational
 //! (a square root of a non-square rational, or of a surd with `q ≠ 0` and `r` not a
 //! square) and is correctly rounded by Ziv's strategy
-//! ([`crate::ops::algebraic::correctly_rounded`]): its MPFR interval enclosure (outward
+//! (`ops::algebraic::correctly_rounded`): its MPFR interval enclosure (outward
 //! rounded at every operation) is refined until it lies between two consecutive
 //! midpoints of doubles. An irrational number is never a double or a midpoint, so this
 //! ends; the precision cap still bounds it, and past it the value keeps its enclosure

@@ -514,7 +514,7 @@ pub fn distance_bound<R: Surface, S: Surface>(
     let mut sum = Interval::ZERO;
     for i in 0..3 {
         let d = (Interval::point(xyz[i]) - q[i]).abs();
-        sum = sum + d.sqr();
+        sum += d.sqr();
     }
     (q, sum.sqrt().hi())
 }

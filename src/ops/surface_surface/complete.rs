@@ -174,7 +174,7 @@ pub fn hole_face_roots<R: Surface, S: Surface>(
             }
             for bound in [h[k].lo(), h[k].hi()] {
                 let c = &pair.coords[k];
-                if !c.periodic && !(ctx.search[k][0] < bound && bound < ctx.search[k][1]) {
+                if !(c.periodic || ctx.search[k][0] < bound && bound < ctx.search[k][1]) {
                     continue;
                 }
                 let face: Option<Vec<[f64; 2]>> = (0..4)

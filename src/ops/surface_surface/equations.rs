@@ -158,7 +158,7 @@ impl<R: Surface, S: Surface> System for CriticalSystem<'_, R, S> {
         self.equations(x, false).0.to_vec()
     }
     /// The Jacobian from second-order jets: `∂g/∂u = det(d, N_r,u, N_s)` and so on
-    /// ([`normal_derivatives`]).
+    /// (`normal_derivatives`).
     fn eval_with_jacobian<T: Real>(&self, x: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
         let (f, j) = self.equations(x, true);
         value_and_rows(f, j)

@@ -185,7 +185,7 @@ fn common_normal_proof<R: Surface, S: Surface>(
     let js = pair.s.jet(&x[2], &x[3], 1);
     let ns = cross(&js[1], &js[2]);
     let nn = norm_sq(&ns);
-    if !(nn > 0.0) {
+    if nn.partial_cmp(&0.0) != Some(std::cmp::Ordering::Greater) {
         return Proof::None;
     }
     let d = crate::num::vector::sub(&pair.r.jet(&x[0], &x[1], 0)[0], &js[0]);

@@ -68,7 +68,7 @@ pub fn starting_points<R: Surface, S: Surface>(
     let mut contacts = Vec::new();
     for (x, tangent) in found {
         let f = LocalFrame::at(pair, x, 1.0, None);
-        if tangent || !(f.sin >= sin_tan) {
+        if tangent || f.sin.partial_cmp(&sin_tan).is_none_or(|o| o.is_lt()) {
             contacts.push(x);
         } else if !starts.iter().any(|s: &Start| same(pair, &s.x, &x)) {
             starts.push(Start {

@@ -72,7 +72,7 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
         let p0 = space_point(pair, &start);
         let mut points = vec![(start, None)];
         let mut frame = LocalFrame::at(pair, start, sigma, None);
-        if !(frame.sin >= sin_sw) {
+        if frame.sin.partial_cmp(&sin_sw).is_none_or(|o| o.is_lt()) {
             return Direction {
                 points,
                 end: CurveEnd::Tangency,
@@ -259,6 +259,7 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
     }
 }
 
+#[allow(clippy::large_enum_variant)] // short-lived, one per step; boxing buys nothing
 enum Attempt {
     Next([f64; 4], LocalFrame),
     Boundary([f64; 4]),
