@@ -8,6 +8,8 @@
 //! definitions), bit for bit, and must lie in its box. `GEOCERT_ROUNDING_CASES` sets
 //! the number of cases per family (default 400).
 
+mod truth_support;
+
 use geocert::geom::{Line, Line2};
 use geocert::ops::{self, Answer, Linear, LinearObject, Options, Point, Shape};
 use geocert::robust::rng::Rng;
@@ -39,28 +41,7 @@ fn rounded(x: &Float) -> f64 {
 /// The CASES.md frame at 300 bits: Z = axis/|axis|, X = (e − (e·Z)Z)/|…| with `e` =
 /// ref or the coordinate vector least aligned with Z (first on ties), Y = Z × X.
 fn frame(axis: [f64; 3], reference: Option<[f64; 3]>) -> [[Float; 3]; 3] {
-    let a: [Float; 3] = axis.map(f);
-    let len = (a[0].clone().square() + a[1].clone().square() + a[2].clone().square()).sqrt();
-    let z: [Float; 3] = std::array::from_fn(|i| a[i].clone() / &len);
-    let e = reference.unwrap_or_else(|| {
-        let mut k = 0;
-        for i in 1..3 {
-            if axis[i].abs() < axis[k].abs() {
-                k = i;
-            }
-        }
-        std::array::from_fn(|i| if i == k { 1.0 } else { 0.0 })
-    });
-    let e: [Float; 3] = e.map(f);
-    let ez = dot(&e, &z);
-    let w: [Float; 3] = std::array::from_fn(|i| e[i].clone() - ez.clone() * &z[i]);
-    let wl = dot(&w, &w).sqrt();
-    let x: [Float; 3] = std::array::from_fn(|i| w[i].clone() / &wl);
-    let y: [Float; 3] = std::array::from_fn(|i| {
-        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-        z[j].clone() * &x[k] - z[k].clone() * &x[j]
-    });
-    [x, y, z]
+    truth_support::docs_frame(axis, reference, BITS)
 }
 
 fn dot(a: &[Float], b: &[Float]) -> Float {

@@ -11,6 +11,8 @@
 // Coordinates are compared by index against several parallel arrays.
 #![allow(clippy::needless_range_loop)]
 
+mod truth_support;
+
 use geocert::curve::frame::Frame;
 use geocert::curve::{Analytic, AnyCurve3, Bezier, Shape as CurveShape};
 use geocert::geom::Plane;
@@ -44,28 +46,7 @@ fn dot(a: &[Float], b: &[Float]) -> Float {
 
 /// The docs/FORMAT.md frame at 300 bits (`[X, Y, Z]`).
 fn frame(axis: [f64; 3], reference: Option<[f64; 3]>) -> [[Float; 3]; 3] {
-    let a: [Float; 3] = axis.map(f);
-    let len = dot(&a, &a).sqrt();
-    let z: [Float; 3] = std::array::from_fn(|i| a[i].clone() / &len);
-    let e = reference.unwrap_or_else(|| {
-        let mut k = 0;
-        for i in 1..3 {
-            if axis[i].abs() < axis[k].abs() {
-                k = i;
-            }
-        }
-        std::array::from_fn(|i| if i == k { 1.0 } else { 0.0 })
-    });
-    let e: [Float; 3] = e.map(f);
-    let ez = dot(&e, &z);
-    let w: [Float; 3] = std::array::from_fn(|i| e[i].clone() - ez.clone() * &z[i]);
-    let wl = dot(&w, &w).sqrt();
-    let x: [Float; 3] = std::array::from_fn(|i| w[i].clone() / &wl);
-    let y: [Float; 3] = std::array::from_fn(|i| {
-        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
-        z[j].clone() * &x[k] - z[k].clone() * &x[j]
-    });
-    [x, y, z]
+    truth_support::docs_frame(axis, reference, BITS)
 }
 
 /// The reported double is the correct rounding of the truth and its box holds it.

@@ -112,3 +112,34 @@ pub fn nums(xs: &[f64]) -> String {
     let parts: Vec<String> = xs.iter().map(|&x| num(x)).collect();
     format!("[{}]", parts.join(","))
 }
+
+/// The docs/FORMAT.md frame of an analytic object at `bits` (`[X, Y, Z]`): Z the unit
+/// axis, X the reference (or the coordinate vector least aligned with Z, first on
+/// ties) made orthogonal to Z and unit, Y = Z × X.
+pub fn docs_frame(axis: [f64; 3], reference: Option<[f64; 3]>, bits: u32) -> [[Float; 3]; 3] {
+    let f = |x: f64| Float::with_val(bits, x);
+    let dot =
+        |a: &[Float], b: &[Float]| a.iter().zip(b).fold(f(0.0), |s, (x, y)| s + x.clone() * y);
+    let a: [Float; 3] = axis.map(f);
+    let len = dot(&a, &a).sqrt();
+    let z: [Float; 3] = std::array::from_fn(|i| a[i].clone() / &len);
+    let e = reference.unwrap_or_else(|| {
+        let mut k = 0;
+        for i in 1..3 {
+            if axis[i].abs() < axis[k].abs() {
+                k = i;
+            }
+        }
+        std::array::from_fn(|i| if i == k { 1.0 } else { 0.0 })
+    });
+    let e: [Float; 3] = e.map(f);
+    let ez = dot(&e, &z);
+    let w: [Float; 3] = std::array::from_fn(|i| e[i].clone() - ez.clone() * &z[i]);
+    let wl = dot(&w, &w).sqrt();
+    let x: [Float; 3] = std::array::from_fn(|i| w[i].clone() / &wl);
+    let y: [Float; 3] = std::array::from_fn(|i| {
+        let (j, k) = ((i + 1) % 3, (i + 2) % 3);
+        z[j].clone() * &x[k] - z[k].clone() * &x[j]
+    });
+    [x, y, z]
+}
