@@ -160,7 +160,7 @@ pub struct CurvesAnswer {
     /// Isolated points of the intersection (two spheres touching from outside).
     pub points: Vec<Point>,
     /// The exact conic of a plane ∩ quadric (OPERATIONS.md §13.2).
-    pub conic: Option<crate::ops::section::Section>,
+    pub conic: Option<crate::ops::rational::Section>,
 }
 
 /// The answer of an operation.

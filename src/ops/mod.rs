@@ -32,6 +32,7 @@ pub mod nearest;
 pub mod options;
 pub mod polyhedron;
 pub mod project;
+pub(crate) mod rational;
 pub mod section;
 pub mod shape;
 pub mod space_curves;

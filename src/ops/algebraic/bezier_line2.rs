@@ -18,10 +18,10 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::bezier_plane::{bezier_points, ExactBezier};
-use super::exact::{dot, sign_at_root};
 use crate::certificate::{Arithmetic, Certified};
 use crate::curve::bezier::Bezier;
 use crate::ops::answer::Answer;
+use crate::ops::rational::exact::{dot, sign_at_root};
 
 /// A Bézier curve against the line `o + s·d` (`d ≠ 0`), restricted to `range` if any.
 pub(crate) fn bezier_line2(

@@ -19,13 +19,13 @@
 use rug::Rational;
 
 use super::conic_plane::ExactPlane;
-use super::exact::{dot, round_enclosure, RatInterval};
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::{real_roots_in, Polynomial, RealRoot};
 use crate::curve::bezier::Bezier;
 use crate::curve::Curve;
 use crate::num::round::{round_rational, Rounded};
 use crate::ops::answer::{Answer, ExactPoint, Point};
+use crate::ops::rational::exact::{dot, round_enclosure, RatInterval};
 
 /// `Σ cᵢ Bᵢⁿ(t)` in the power basis, exactly.
 fn bernstein(c: &[Rational]) -> Polynomial {

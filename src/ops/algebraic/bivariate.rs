@@ -7,8 +7,8 @@ use std::cmp::Ordering;
 
 use rug::{Integer, Rational};
 
-use super::quadric::Conic;
 use crate::certify::univariate::Polynomial;
+use crate::ops::rational::Conic;
 
 /// `Σ c[i][j] xⁱ yʲ`.
 #[derive(Debug, Clone, PartialEq)]

@@ -4,9 +4,9 @@
 
 use rug::Rational;
 
-use super::exact::{exact_vec, positive};
-use super::quadric::{diagonal, framed, identity, inv_sq, zero, QuadricForm};
 use crate::error::GeomError;
+use crate::ops::rational::exact::{exact_vec, positive};
+use crate::ops::rational::{diagonal, framed, identity, inv_sq, zero, QuadricForm};
 
 impl QuadricForm<2> {
     /// The conic `a x² + b xy + c y² + d x + e y + f = 0` (§1.7 with `a₁₂ = b/2`,

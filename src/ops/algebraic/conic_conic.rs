@@ -28,12 +28,12 @@
 use rug::Rational;
 
 use super::bivariate::{common_root, resultant, Bivariate};
-use super::exact::RatInterval;
-use super::quadric::Conic;
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::{gcd, real_roots, square_free_part, Polynomial, RealRoot};
 use crate::error::GeomError;
 use crate::num::round::Rounded;
+use crate::ops::rational::exact::RatInterval;
+use crate::ops::rational::Conic;
 
 /// One intersection point of two conics.
 #[derive(Debug, Clone)]

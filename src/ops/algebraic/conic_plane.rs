@@ -36,9 +36,7 @@ use rug::Rational;
 use std::cmp::Ordering;
 use std::f64::consts::TAU;
 
-use super::exact::{dot, round_affine, sign_at_root};
 use super::line::affine;
-use super::rounding::{correctly_rounded, enclose_root, wrapped_angle};
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::{real_roots, Polynomial, RealRoot};
 use crate::curve::analytic::{Analytic, Shape as CurveShape};
@@ -48,6 +46,8 @@ use crate::num::round::{round_rational, Rounded};
 use crate::num::{MpfrInterval, Real};
 use crate::ops::answer::{Answer, ExactPoint, Point};
 use crate::ops::closed_surface::frame_x_unnormalised;
+use crate::ops::rational::exact::{dot, round_affine, sign_at_root};
+use crate::ops::rational::rounding::{correctly_rounded, enclose_root, wrapped_angle};
 use crate::ops::shape::{Linear, LinearObject};
 
 type V3 = [Rational; 3];

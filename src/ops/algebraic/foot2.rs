@@ -24,13 +24,13 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::pairs::{not_correctly_rounded, plane_conic, PlaneConic};
-use super::rounding::{correctly_rounded, enclose_root, PRECISION_CAP};
 use super::{intersect_conic_conic, ConicCut, ConicHit, QuadricForm};
 use crate::certificate::Certified;
 use crate::certify::univariate::RealRoot;
 use crate::num::round::{sqrt_rational, Rounded};
 use crate::num::{Interval, MpfrInterval};
 use crate::ops::answer::{Answer, Point};
+use crate::ops::rational::rounding::{correctly_rounded, enclose_root, PRECISION_CAP};
 use crate::ops::shape::Shape;
 
 /// The coefficients of the Apollonius conic `G` of `p` for the conic `f` (module

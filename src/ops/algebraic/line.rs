@@ -6,14 +6,14 @@
 //! is a point, with the root's multiplicity as the intersection multiplicity (1:
 //! transversal, 2: tangent or a singular point, …), decided by the exact square-free
 //! decomposition, and the coordinates `oᵢ + t·dᵢ` correctly rounded
-//! ([`super::exact::round_affine`]).
+//! ([`crate::ops::rational::exact::round_affine`]).
 
 use rug::Rational;
 
-use super::exact::round_affine;
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::{real_roots, Polynomial, RealRoot};
 use crate::num::round::Rounded;
+use crate::ops::rational::exact::round_affine;
 
 /// One point where a line meets the surface (or curve).
 #[derive(Debug, Clone)]

@@ -14,13 +14,13 @@
 
 use rug::Rational;
 
-use super::exact::{dot, exact_line, exact_vec, positive, sign_at_root};
 use super::line::{affine, line_cut, LineCut};
-use super::quadric::QuadricForm;
 use crate::certificate::Certified;
 use crate::certify::univariate::Polynomial;
 use crate::error::GeomError;
 use crate::num::parse::rational_from_f64;
+use crate::ops::rational::exact::{dot, exact_line, exact_vec, positive, sign_at_root};
+use crate::ops::rational::QuadricForm;
 
 /// Line `origin + t·direction` against the exact quadric (`D = 3`) or conic (`D = 2`):
 /// every real intersection with its exact multiplicity, `status: exact`,

@@ -20,15 +20,13 @@ mod bivariate;
 mod conic;
 mod conic_conic;
 mod conic_plane;
-mod exact;
 mod foot2;
 mod line;
 mod line_surface;
 pub(crate) mod pairs;
 mod params;
-mod quadric;
-mod rounding;
 
+pub use crate::ops::rational::{Conic, QuadricForm};
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
 pub(crate) use foot2::project_point_conic2;
 pub use line::{LineCut, LineHit};
@@ -36,5 +34,3 @@ pub use line_surface::{
     intersect_line_conic, intersect_line_quadric, intersect_line_quadric_exact,
     intersect_line_torus, intersect_line_torus_exact, TorusData,
 };
-pub use quadric::{Conic, QuadricForm};
-pub(crate) use rounding::{correctly_rounded, PRECISION_CAP};

@@ -15,7 +15,6 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::params::{line_hit_params, ClosedFrame, Ellipse2, Param};
-use super::rounding::PRECISION_CAP;
 use super::{intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact};
 use super::{ConicCut, ConicHit, LineCut, LineHit, QuadricForm, TorusData};
 use crate::certificate::{Certified, Status};
@@ -27,6 +26,7 @@ use crate::num::round::round_rational;
 use crate::num::{Interval, Real};
 use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
 use crate::ops::closed_surface::is_closed_shell;
+use crate::ops::rational::rounding::PRECISION_CAP;
 use crate::ops::shape::{Linear, LinearObject, Shape};
 use crate::surface::frame::Frame;
 use crate::surface::AnySurface;

@@ -4,18 +4,20 @@
 //! special values (a zero angle, π, a pole) are exact: the local coordinates of a point
 //! `o + t·d` are affine in the exact parameter `t` up to a positive factor (the length
 //! of the frame's unnormalised axis), so their signs are signs of polynomials at an
-//! algebraic number ([`super::exact::sign_at_root`]).
+//! algebraic number ([`crate::ops::rational::exact::sign_at_root`]).
 
 use rug::Rational;
 use std::cmp::Ordering;
 
-use super::exact::{dot, sign_at_root};
 use super::line::affine;
-use super::rounding::{correctly_rounded, enclose_root, special_angle, wrapped_angle};
 use crate::certify::univariate::{Polynomial, RealRoot};
 use crate::num::round::Rounded;
 use crate::num::{MpfrInterval, Real};
 use crate::ops::closed_surface::frame_x_unnormalised;
+use crate::ops::rational::exact::{dot, sign_at_root};
+use crate::ops::rational::rounding::{
+    correctly_rounded, enclose_root, special_angle, wrapped_angle,
+};
 use crate::surface::frame::Frame;
 
 /// A parameter as reported: the correctly rounded value and its enclosure.

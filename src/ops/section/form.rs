@@ -11,8 +11,8 @@
 
 use rug::Rational;
 
-use crate::ops::algebraic::QuadricForm;
 use crate::ops::closed_surface::is_closed_shell;
+use crate::ops::rational::QuadricForm;
 use crate::surface::quadrics::Sheets;
 use crate::surface::AnySurface;
 

@@ -20,8 +20,8 @@ use super::{
 };
 use crate::certificate::Certified;
 use crate::error::GeomError;
-use crate::ops::algebraic::QuadricForm;
 use crate::ops::answer::Answer;
+use crate::ops::rational::QuadricForm;
 use crate::ops::shape::Shape;
 use rug::Rational;
 

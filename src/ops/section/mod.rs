@@ -5,12 +5,12 @@
 //! [`section()`] is the front door of the `section` operation: a quadric surface (its
 //! whole implicit quadric, [`form`]) or a polyhedron, cut by a plane.
 
-pub mod conic;
 pub mod form;
 mod front;
-pub mod plane;
+// The exact conic, plane and surd arithmetic live below `answer` (ops::rational),
+// which names the section type; they stay reachable here under their old paths.
+pub use crate::ops::rational::{conic, plane, surd};
 pub mod polygon;
-pub mod surd;
 
 use rug::Rational;
 

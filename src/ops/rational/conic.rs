@@ -25,7 +25,7 @@ use std::cmp::Ordering;
 use super::plane::{ExactPlane, PlaneFrame};
 use super::surd::{Surd, Value};
 use crate::num::ring::V3;
-use crate::ops::algebraic::QuadricForm;
+use crate::ops::rational::QuadricForm;
 
 /// The type of a plane section of a quadric.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -18,7 +18,7 @@ use std::cmp::Ordering;
 
 use crate::num::round::{round_rational, sqrt_rational};
 use crate::num::MpfrInterval;
-use crate::ops::algebraic::{correctly_rounded, PRECISION_CAP};
+use crate::ops::rational::{correctly_rounded, PRECISION_CAP};
 
 /// `p + q√r`, normalised so that `q ≠ 0` implies `r` is not the square of a rational.
 #[derive(Debug, Clone, PartialEq)]

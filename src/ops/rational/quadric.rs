@@ -22,17 +22,17 @@ use crate::error::GeomError;
 #[derive(Debug, Clone, PartialEq)]
 pub struct QuadricForm<const D: usize> {
     /// The symmetric matrix `A`.
-    pub(super) a: [[Rational; D]; D],
+    pub(crate) a: [[Rational; D]; D],
     /// The vector `b` (half the linear coefficients).
-    pub(super) b: [Rational; D],
+    pub(crate) b: [Rational; D],
     /// The constant `c₀`.
-    pub(super) c: Rational,
+    pub(crate) c: Rational,
 }
 
 /// The plane conic `F(x, y) = 0`, as the 2D quadric form.
 pub type Conic = QuadricForm<2>;
 
-pub(super) fn zero<const D: usize>() -> [Rational; D] {
+pub(crate) fn zero<const D: usize>() -> [Rational; D] {
     std::array::from_fn(|_| Rational::new())
 }
 
@@ -91,7 +91,7 @@ impl<const D: usize> QuadricForm<D> {
         &self.c
     }
 
-    pub(super) fn require_non_zero(&self) -> Result<(), GeomError> {
+    pub(crate) fn require_non_zero(&self) -> Result<(), GeomError> {
         let nz = |x: &Rational| x.cmp0() != Ordering::Equal;
         if self.a.iter().flatten().any(nz) || self.b.iter().any(nz) || nz(&self.c) {
             Ok(())
@@ -124,7 +124,7 @@ impl<const D: usize> QuadricForm<D> {
     /// pull-back of a form written in a local frame (for an orthonormal `M`, `x = p + My`;
     /// columns of any length scale the local coordinates, as
     /// [`QuadricForm::ellipsoid_in_frame`] uses).
-    pub(super) fn in_frame(
+    pub(crate) fn in_frame(
         local: &QuadricForm<D>,
         p: &[Rational; D],
         columns: &[[Rational; D]; D],
@@ -176,7 +176,7 @@ fn orthonormal_frame<const D: usize>(
 }
 
 /// A diagonal local form `Σ wᵢ yᵢ² + 2 Σ βᵢ yᵢ + γ`.
-pub(super) fn diagonal<const D: usize>(
+pub(crate) fn diagonal<const D: usize>(
     w: [Rational; D],
     beta: [Rational; D],
     gamma: Rational,
@@ -192,13 +192,13 @@ pub(super) fn diagonal<const D: usize>(
     }
 }
 
-pub(super) fn inv_sq(field: &str, x: f64) -> Result<Rational, GeomError> {
+pub(crate) fn inv_sq(field: &str, x: f64) -> Result<Rational, GeomError> {
     let q = positive(field, x)?;
     Ok(Rational::from(&q * &q).recip())
 }
 
 /// A local-frame form pulled back when the frame is exactly orthonormal.
-pub(super) fn framed<const D: usize>(
+pub(crate) fn framed<const D: usize>(
     origin: &[f64; D],
     frame: &[[f64; D]; D],
     local: QuadricForm<D>,
@@ -232,7 +232,7 @@ impl QuadricForm<3> {
     }
 
     /// The sphere on exact data.
-    pub(super) fn sphere_exact(c: &[Rational; 3], r: &Rational) -> Self {
+    pub(crate) fn sphere_exact(c: &[Rational; 3], r: &Rational) -> Self {
         let one = || Rational::from(1);
         let local = diagonal([one(), one(), one()], zero(), -Rational::from(r * r));
         QuadricForm::in_frame(&local, c, &identity())
@@ -438,7 +438,7 @@ impl QuadricForm<3> {
     }
 }
 
-pub(super) fn identity<const D: usize>() -> [[Rational; D]; D] {
+pub(crate) fn identity<const D: usize>() -> [[Rational; D]; D] {
     std::array::from_fn(|i| std::array::from_fn(|j| Rational::from(u32::from(i == j))))
 }
 
