@@ -13,6 +13,7 @@
 //! * [`certify`] — Krawczyk, subdivision, precision escalation, singular roots;
 //! * [`ops`] — every operation's front door (`ops::intersect`, `ops::project`,
 //!   `ops::classify`); beside it `oracle`, the CGAL bridge (feature `cgal`);
+//! * [`prelude`] — the names most programs need, in one `use geocert::prelude::*;`;
 //! * [`io`] — the JSON case format (docs/FORMAT.md); beside it [`robust`], the
 //!   robustness generators and table.
 
@@ -26,9 +27,15 @@ pub mod num;
 pub mod ops;
 #[cfg(feature = "cgal")]
 pub mod oracle;
+pub mod prelude;
 pub mod robust;
 pub mod surface;
 pub mod walk;
 
 pub use certificate::{Arithmetic, Certified, Status};
+
+/// The README's library example, compiled and run as a doctest.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 pub use error::GeomError;

@@ -14,6 +14,19 @@ use crate::ops::{self, Answer, Options, ProjectOptions};
 
 /// Solve one case read from the input. Errors (unreadable cases, invalid objects,
 /// unsupported operations) become error records naming the field.
+///
+/// ```
+/// // One case of the command line's format (docs/FORMAT.md), solved from the library.
+/// let text = r#"{"id": 1, "op": "intersect", "objects": [
+///     {"type": "line", "origin": [0.6, 0, -2], "dir": [0, 0, 1]},
+///     {"type": "sphere", "center": [0, 0, 0], "radius": 1}]}"#;
+/// let case = geocert::io::read_cases(&text.replace('\n', " ")).remove(0);
+/// let result = geocert::io::solve_case(case);
+/// assert_eq!(result.status, "exact");
+/// assert_eq!(result.kind, Some("points"));
+/// let json = serde_json::to_string(&result).unwrap();
+/// assert!(json.contains(r#""xyz":[0.6,0.0,-0.8]"#), "{json}");
+/// ```
 pub fn solve_case(read: ReadCase) -> CaseResult {
     let start = Instant::now();
     let case = match read.case {

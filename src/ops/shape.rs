@@ -340,3 +340,61 @@ impl Position {
         }
     }
 }
+
+// Conversions, so that a library caller writes `Shape::from(sphere)` (or passes
+// `sphere.into()`) instead of spelling out the enum nesting.
+
+macro_rules! shape_from {
+    ($($ty:ty => |$v:ident| $body:expr),* $(,)?) => {
+        $(impl From<$ty> for Shape {
+            fn from($v: $ty) -> Shape {
+                $body
+            }
+        })*
+    };
+}
+
+macro_rules! surface_shape_from {
+    ($($variant:ident($ty:ty)),* $(,)?) => {
+        $(impl From<$ty> for Shape {
+            fn from(s: $ty) -> Shape {
+                Shape::Surface(AnySurface::$variant(s))
+            }
+        })*
+    };
+}
+
+shape_from! {
+    Line<f64> => |l| Shape::Linear(Linear::Double(LinearObject::Line(l))),
+    Segment<f64> => |s| Shape::Linear(Linear::Double(LinearObject::Segment(s))),
+    Plane<f64> => |p| Shape::Linear(Linear::Double(LinearObject::Plane(p))),
+    Line2<f64> => |l| Shape::Linear(Linear::Double(LinearObject::Line2(l))),
+    Segment2<f64> => |s| Shape::Linear(Linear::Double(LinearObject::Segment2(s))),
+    Line<Rational> => |l| Shape::Linear(Linear::Exact(LinearObject::Line(l))),
+    Segment<Rational> => |s| Shape::Linear(Linear::Exact(LinearObject::Segment(s))),
+    Plane<Rational> => |p| Shape::Linear(Linear::Exact(LinearObject::Plane(p))),
+    Line2<Rational> => |l| Shape::Linear(Linear::Exact(LinearObject::Line2(l))),
+    Segment2<Rational> => |s| Shape::Linear(Linear::Exact(LinearObject::Segment2(s))),
+    AnySurface => |s| Shape::Surface(s),
+    AnyCurve3 => |c| Shape::Curve(c),
+    AnyCurve2 => |c| Shape::Curve2(c),
+    Conic2 => |c| Shape::Conic2(c),
+    Polyhedron => |p| Shape::Polyhedron(p),
+    crate::curve::Analytic => |c| Shape::Curve(AnyCurve3::Analytic(c)),
+    crate::curve::Analytic2 => |c| Shape::Curve2(AnyCurve2::Analytic(c)),
+}
+
+surface_shape_from! {
+    Sphere(crate::surface::quadrics::Sphere),
+    Ellipsoid(crate::surface::quadrics::Ellipsoid),
+    Hyperboloid(crate::surface::quadrics::Hyperboloid),
+    Paraboloid(crate::surface::quadrics::Paraboloid),
+    ParaboloidRect(crate::surface::plane::ParaboloidRect),
+    Plane(crate::surface::plane::Plane),
+    Cylinder(crate::surface::quadrics::Cylinder),
+    Cone(crate::surface::quadrics::Cone),
+    Torus(crate::surface::torus::Torus),
+    Bilinear(crate::surface::bilinear::Bilinear),
+    Bezier(crate::surface::bezier::BezierSurface),
+    Nurbs(crate::surface::nurbs::NurbsSurface),
+}

@@ -29,6 +29,22 @@ use crate::ops::shape::{Position, Shape};
 
 /// Every common point (or line, segment, coincidence) of two or three shapes,
 /// certified. Errors name the offending shape as `objects[i]`.
+///
+/// ```
+/// use geocert::prelude::*;
+///
+/// // Two unit spheres whose centres are 1 apart meet in a circle of radius √3/2,
+/// // in the plane x = 1/2 (decided exactly through the radical plane).
+/// let a = Sphere::new([0.0, 0.0, 0.0], 1.0, None, None)?;
+/// let b = Sphere::new([1.0, 0.0, 0.0], 1.0, None, None)?;
+/// let answer = intersect(&[a.into(), b.into()], &Options::default())?;
+/// assert_ne!(answer.status, Status::Undecided);
+/// let Answer::Curves(curves) = &answer.value else { panic!("{answer:?}") };
+/// let circle = curves.conic.as_ref().expect("the exact circle");
+/// let centre = circle.center.as_ref().expect("its centre");
+/// assert_eq!(centre[0], rug::Rational::from((1, 2)));
+/// # Ok::<(), GeomError>(())
+/// ```
 pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, GeomError> {
     exact_beyond_range(opts, |o| intersect::intersect(shapes, o))
 }
@@ -36,6 +52,22 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
 /// The projections of `point` onto `onto`: every foot of a perpendicular (points where
 /// the distance is stationary, docs/FORMAT.md "Projections"), or with `nearest` the nearest
 /// point of the closed domain, or with `direction` the hits of the ray (§3.5).
+///
+/// ```
+/// use geocert::prelude::*;
+///
+/// // The nearest point of the torus R = 2, r = 1 about z to (3, 0, 1): on the tube's
+/// // circle about (2, 0, 0) in the plane y = 0, at distance √2 − 1.
+/// let torus = Torus::new([0.0; 3], 2.0, 1.0, [0.0, 0.0, 1.0], None)?;
+/// let point = Position::Double(vec![3.0, 0.0, 1.0]);
+/// let how = ProjectOptions { nearest: true, ..Default::default() };
+/// let answer = project(&point, &torus.into(), &how)?;
+/// assert_ne!(answer.status, Status::Undecided);
+/// let Answer::Points(feet) = &answer.value else { panic!("{answer:?}") };
+/// let d = feet[0].distance.expect("a distance");
+/// assert!((d - (2f64.sqrt() - 1.0)).abs() < 1e-15);
+/// # Ok::<(), GeomError>(())
+/// ```
 pub fn project(
     point: &Position,
     onto: &Shape,
@@ -53,6 +85,16 @@ pub fn project(
 /// The side of `point` relative to the closed `shell` (`inside`, `on`, `outside`),
 /// with the nearest point of the shell when it is proven (else the certificate's
 /// `reason` says why not).
+///
+/// ```
+/// use geocert::prelude::*;
+///
+/// let ball = Sphere::new([0.0; 3], 1.0, None, None)?;
+/// let inside = classify(&Position::Double(vec![0.5, 0.5, 0.5]), &ball.into(), &Options::default())?;
+/// assert_eq!(inside.status, Status::Exact);
+/// assert!(matches!(inside.value, Answer::Side(Side::Inside, _)));
+/// # Ok::<(), GeomError>(())
+/// ```
 pub fn classify(
     point: &Position,
     shell: &Shape,
