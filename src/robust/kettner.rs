@@ -67,6 +67,51 @@ pub fn certified(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Option<(Ordering, Ari
     Some((sign, c.arithmetic))
 }
 
+/// The signs at every point of the grid, point `(i, j)` at index `i·SIDE + j`.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct SignMap {
+    /// The exact orientation.
+    pub truth: Vec<Ordering>,
+    /// Plain f64 ([`plain`]).
+    pub plain: Vec<Ordering>,
+    /// geocert certified ([`certified`]; `None`: no answer) and whether its double-double
+    /// filter decided it.
+    pub certified: Vec<Option<Ordering>>,
+    pub filter_decided: Vec<bool>,
+}
+
+/// The signs of every method on the 256×256 grid.
+pub fn sign_map() -> SignMap {
+    let n = SIDE * SIDE;
+    let mut m = SignMap {
+        truth: Vec::with_capacity(n),
+        plain: Vec::with_capacity(n),
+        certified: Vec::with_capacity(n),
+        filter_decided: Vec::with_capacity(n),
+    };
+    for i in 0..SIDE {
+        for j in 0..SIDE {
+            let p = point(i, j);
+            m.truth.push(exact(p, Q, R));
+            m.plain.push(plain(p, Q, R));
+            let c = certified(p, Q, R);
+            m.certified.push(c.map(|(s, _)| s));
+            m.filter_decided
+                .push(c.is_some_and(|(_, a)| a == Arithmetic::Filter));
+        }
+    }
+    m
+}
+
+/// How many of `signs` are negative, zero and positive.
+pub fn histogram<'a>(signs: impl IntoIterator<Item = &'a Ordering>) -> [usize; 3] {
+    let mut h = [0; 3];
+    for s in signs {
+        h[(*s as i8 + 1) as usize] += 1;
+    }
+    h
+}
+
 /// The counts over the grid.
 #[derive(Debug, Clone, PartialEq, Eq)]
 pub struct KettnerCounts {
@@ -82,6 +127,11 @@ pub struct KettnerCounts {
     pub filter_undecided: usize,
     /// geocert certified gave a wrong sign (or no answer).
     pub certified_wrong: usize,
+    /// The exact signs: how many points are negative, zero, positive (the pixels of
+    /// each colour on the certified sign map, [`super::plot`]).
+    pub truth_signs: [usize; 3],
+    /// Plain f64's signs: negative, zero, positive (the plain sign map's pixels).
+    pub plain_signs: [usize; 3],
 }
 
 /// CGAL Epick on the grid: the oracle exposes no orientation predicate, so this asks
@@ -111,36 +161,36 @@ pub fn epick_collinear(p: [f64; 2], q: [f64; 2], r: [f64; 2]) -> Option<bool> {
 
 /// Run every method on the 256×256 grid.
 pub fn grid() -> KettnerCounts {
+    let m = sign_map();
+    let wrong = |v: &[Ordering]| v.iter().zip(&m.truth).filter(|(a, b)| a != b).count();
+    let certified_wrong = m
+        .certified
+        .iter()
+        .zip(&m.truth)
+        .filter(|(c, t)| **c != Some(**t))
+        .count();
+    #[allow(unused_mut)]
     let mut c = KettnerCounts {
         points: SIDE * SIDE,
-        collinear: 0,
-        plain_wrong: 0,
-        epick_wrong: if cfg!(feature = "cgal") {
-            Some(0)
-        } else {
-            None
-        },
-        filter_undecided: 0,
-        certified_wrong: 0,
+        collinear: m.truth.iter().filter(|s| s.is_eq()).count(),
+        plain_wrong: wrong(&m.plain),
+        epick_wrong: None,
+        filter_undecided: m.filter_decided.iter().filter(|d| !**d).count(),
+        certified_wrong,
+        truth_signs: histogram(&m.truth),
+        plain_signs: histogram(&m.plain),
     };
-    for i in 0..SIDE {
-        for j in 0..SIDE {
-            let p = point(i, j);
-            let truth = exact(p, Q, R);
-            c.collinear += (truth == Ordering::Equal) as usize;
-            c.plain_wrong += (plain(p, Q, R) != truth) as usize;
-            match certified(p, Q, R) {
-                Some((s, a)) => {
-                    c.certified_wrong += (s != truth) as usize;
-                    c.filter_undecided += (a != Arithmetic::Filter) as usize;
-                }
-                None => c.certified_wrong += 1,
-            }
-            #[cfg(feature = "cgal")]
-            if let Some(w) = c.epick_wrong.as_mut() {
-                *w += (epick_collinear(p, Q, R) != Some(truth == Ordering::Equal)) as usize;
+    #[cfg(feature = "cgal")]
+    {
+        let mut w = 0;
+        for i in 0..SIDE {
+            for j in 0..SIDE {
+                let p = point(i, j);
+                let truth = m.truth[i * SIDE + j];
+                w += (epick_collinear(p, Q, R) != Some(truth == Ordering::Equal)) as usize;
             }
         }
+        c.epick_wrong = Some(w);
     }
     c
 }

@@ -9,10 +9,13 @@
 
 pub mod answer;
 pub mod case;
+pub mod curved;
 pub mod gen;
 pub mod kettner;
 pub mod line_line;
 pub mod methods;
+pub mod plot;
+pub mod report;
 pub mod table;
 
 #[cfg(test)]
@@ -22,4 +25,5 @@ mod lane_tests;
 pub use crate::num::rng;
 pub use case::Case;
 pub use gen::{case, Construction, Generator};
+pub use report::Report;
 pub use table::{robustness_table, Table};

@@ -192,7 +192,7 @@ impl fmt::Display for Table {
 
 impl Table {
     /// The header (seed, what the columns count) and a row per construction and generator.
-    fn fmt_rows(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    pub(crate) fn fmt_rows(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let cgal = self.rows.first().is_some_and(|r| r.epick.is_some());
         writeln!(
             f,
@@ -259,7 +259,7 @@ impl Table {
     }
 
     /// The Kettner et al. near-collinear grid's line.
-    fn fmt_kettner(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+    pub(crate) fn fmt_kettner(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let k = &self.kettner;
         writeln!(f)?;
         writeln!(

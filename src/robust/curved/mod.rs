@@ -1,0 +1,171 @@
+//! The curved half of the robustness benchmark: seeded tangent and near-tangent
+//! configurations (line ∩ sphere, line ∩ torus, circle2 ∩ circle2, circle2 ∩ ellipse2,
+//! circle ∩ sphere) swept over gaps `10⁻³ … 10⁻¹⁵`, ±1 ulp and exact tangency, each run
+//! through geocert's float path (the `_f64` solvers seeded by the walks of
+//! OPERATIONS.md §2, no proof) and through the certified front door
+//! ([`crate::ops::intersect`]), against a truth computed independently
+//! ([`truth`]: exact rational root counts, points at 300 bits).
+//!
+//! Every configuration is built from dyadic data (multiples of 2⁻²⁰ with few bits and
+//! Pythagorean directions) so that the exactly tangent one is exactly tangent in
+//! doubles; the near-tangent ones scale one radius by `1 ± gap` (rounded) or move it by
+//! one ulp. `+` always makes the shapes cross, `−` separates them.
+
+pub mod gen;
+pub mod paths;
+pub mod table;
+pub mod truth;
+
+pub use gen::case;
+pub use table::{curved_table, CurvedRow, CurvedTable};
+
+/// The families of the curved benchmark.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Family {
+    /// A line tangent to a sphere; the sphere's radius perturbed (OPERATIONS.md §5.2,
+    /// decided by the exact algebraic solver).
+    LineSphere,
+    /// A horizontal line tangent to a ring torus about `z`: in its top (or bottom)
+    /// tangent plane across the tube, or tangent to the outer equator; the minor radius
+    /// perturbed (exact quartic of §5.2 with §1.6).
+    LineTorus,
+    /// Two circles tangent externally or internally; the second radius perturbed
+    /// (§6.3–§6.4, exact conic pair).
+    Circle2Circle2,
+    /// A circle tangent to an ellipse at the end of its minor axis, from outside or
+    /// inside; the circle's radius perturbed (exact conic pair).
+    Circle2Ellipse2,
+    /// A space circle tangent to a sphere (in a plane through the sphere's centre); the
+    /// circle's radius perturbed (§5.2, decided by the numeric certifier).
+    CircleSphere,
+}
+
+impl Family {
+    pub const ALL: [Family; 5] = [
+        Family::LineSphere,
+        Family::LineTorus,
+        Family::Circle2Circle2,
+        Family::Circle2Ellipse2,
+        Family::CircleSphere,
+    ];
+
+    /// The name in the table, the JSON and the plots' legends.
+    pub fn name(self) -> &'static str {
+        match self {
+            Family::LineSphere => "line-sphere",
+            Family::LineTorus => "line-torus",
+            Family::Circle2Circle2 => "circle2-circle2",
+            Family::Circle2Ellipse2 => "circle2-ellipse2",
+            Family::CircleSphere => "circle-sphere",
+        }
+    }
+}
+
+/// How far a configuration is from tangency.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
+pub enum Gap {
+    /// A radius scaled by `1 ± 10⁻ᵏ` (then rounded to a double).
+    Pow(i32),
+    /// A radius moved to the next or previous double.
+    Ulp,
+    /// Exactly tangent.
+    Tangent,
+}
+
+impl Gap {
+    /// The sweep, from the widest gap to tangency: `10⁻³ … 10⁻¹⁵`, 1 ulp, 0.
+    pub fn all() -> Vec<Gap> {
+        (3..=15)
+            .map(Gap::Pow)
+            .chain([Gap::Ulp, Gap::Tangent])
+            .collect()
+    }
+
+    /// The relative gap as a number (1 ulp: 2⁻⁵², the spacing of doubles relative to
+    /// the value at the bottom of a binade; tangent: 0).
+    pub fn value(self) -> f64 {
+        match self {
+            Gap::Pow(k) => 10f64.powi(-k),
+            Gap::Ulp => f64::EPSILON,
+            Gap::Tangent => 0.0,
+        }
+    }
+
+    /// The label in the table and the JSON (`1e-3`, `1ulp`, `0`).
+    pub fn label(self) -> String {
+        match self {
+            Gap::Pow(k) => format!("1e-{k}"),
+            Gap::Ulp => "1ulp".into(),
+            Gap::Tangent => "0".into(),
+        }
+    }
+}
+
+/// The input of one case, as doubles (the shapes are built from these).
+#[derive(Debug, Clone, PartialEq)]
+pub enum Data {
+    /// The line `o + t·d` and the sphere `|x − c| = r`.
+    LineSphere {
+        o: [f64; 3],
+        d: [f64; 3],
+        c: [f64; 3],
+        r: f64,
+    },
+    /// The line `o + t·d` (`d_z = 0`) and the torus about the `z` axis through `c`.
+    LineTorus {
+        o: [f64; 3],
+        d: [f64; 3],
+        c: [f64; 3],
+        major: f64,
+        minor: f64,
+    },
+    /// Two circles.
+    Circles2 {
+        c1: [f64; 2],
+        r1: f64,
+        c2: [f64; 2],
+        r2: f64,
+    },
+    /// The circle `|x − c| = rho` and the ellipse about `e` with semi-axes `a` along x,
+    /// `b` along y.
+    CircleEllipse2 {
+        c: [f64; 2],
+        rho: f64,
+        e: [f64; 2],
+        a: f64,
+        b: f64,
+    },
+    /// The space circle of radius `rho` about `q` in the plane with normal `n`, and the
+    /// sphere `|x − c| = r`.
+    CircleSphere {
+        q: [f64; 3],
+        n: [f64; 3],
+        rho: f64,
+        c: [f64; 3],
+        r: f64,
+    },
+}
+
+/// One generated case.
+#[derive(Debug, Clone, PartialEq)]
+pub struct CurvedCase {
+    pub family: Family,
+    pub gap: Gap,
+    /// `+1`: the perturbation makes the shapes cross; `−1`: it separates them; `0`:
+    /// exactly tangent.
+    pub side: i8,
+    pub data: Data,
+}
+
+impl CurvedCase {
+    /// The size the float tolerance is relative to (the largest radius involved).
+    pub fn scale(&self) -> f64 {
+        match self.data {
+            Data::LineSphere { r, .. } => r,
+            Data::LineTorus { major, minor, .. } => major + minor,
+            Data::Circles2 { r1, r2, .. } => r1.max(r2),
+            Data::CircleEllipse2 { rho, a, .. } => rho.max(a),
+            Data::CircleSphere { rho, r, .. } => rho.max(r),
+        }
+    }
+}
