@@ -8,7 +8,7 @@
 //!   [`NEGATIVE`], [`COLLINEAR`], [`POSITIVE`] ([`NO_ANSWER`] if none).
 //! - `float-failure-rate.svg`: per curved family, the fraction of cases where geocert's
 //!   float path got the number of points wrong or a point off, against the gap (log
-//!   axis: `−log₁₀ gap`; 1 ulp at `−log₁₀ 2⁻⁵²`, exact tangency at 17).
+//!   axis: `10⁻ᵏ` at `k`, then 1 ulp and exact tangency).
 //! - `certification-cost.svg`: per family, the mean precision in bits that decided the
 //!   certified answer, against the gap.
 
@@ -54,11 +54,13 @@ fn family_colour(f: Family) -> RGBColor {
     }
 }
 
-/// Where a gap sits on the x axis: `−log₁₀ gap`, tangency at 17.
+/// Where a gap sits on the x axis: `k` for `10⁻ᵏ` (a log axis), then 1 ulp at 16 and
+/// exact tangency at 17.
 pub fn gap_x(g: Gap) -> f64 {
     match g {
+        Gap::Pow(k) => f64::from(k),
+        Gap::Ulp => 16.0,
         Gap::Tangent => 17.0,
-        g => -g.value().log10(),
     }
 }
 
@@ -68,10 +70,10 @@ fn gap_tick(x: &f64) -> String {
         String::new()
     } else if k == 17.0 {
         "0".into()
-    } else if k <= 15.0 {
-        format!("1e-{k}")
+    } else if k == 16.0 {
+        "1ulp".into()
     } else {
-        String::new()
+        format!("1e-{k}")
     }
 }
 
@@ -120,7 +122,7 @@ fn gap_chart(
             .configure_mesh()
             .x_labels(16)
             .x_label_formatter(&gap_tick)
-            .x_desc("gap (log scale; 0 = exactly tangent)")
+            .x_desc("gap (log scale; 1ulp = next double, 0 = exactly tangent)")
             .y_desc(y_desc)
             .draw()
             .map_err(err)?;
