@@ -40,9 +40,10 @@ pub struct Outcome {
     pub float_wrong_count: bool,
     /// The right number, but a point more than the tolerance from the truth.
     pub float_off: bool,
-    /// The certified answer claims something false: a box (of a status other than
-    /// `undecided`) holding no true point, or with `complete` a true point outside every
-    /// box, or an `exact`/`verified` count or tangency that is not the truth's.
+    /// The certified answer claims something false: a simple box (of a status other
+    /// than `undecided`) not holding exactly one true point, a singular box holding more
+    /// than two (with multiplicity), or with `complete` a true point outside every box,
+    /// or an `exact`/`verified` count or tangency that is not the truth's.
     pub certified_wrong: bool,
     /// `undecided`, or not `complete`, or an error from the front door.
     pub certified_undecided: bool,
@@ -131,10 +132,24 @@ fn holds(c: &crate::Certified<Answer>, truth: &Truth, scale: f64) -> bool {
     };
     let slack = SLACK * scale;
     let boxed = |p: &crate::ops::Point, t: &[Float]| inside(&p.xyz_box, t, slack);
-    if !points
-        .iter()
-        .all(|p| truth.points.iter().any(|t| boxed(p, &t.xyz)))
-    {
+    // A simple box (multiplicity 1) holds exactly one true point; a singular box of a
+    // `verified_singular` answer holds at most two counted with multiplicity, possibly
+    // none (CERTIFICATION.md: a double root of a perturbed input).
+    let singular = c.status == Status::VerifiedSingular;
+    let box_holds = |p: &crate::ops::Point| {
+        let inside: Vec<u32> = truth
+            .points
+            .iter()
+            .filter(|t| boxed(p, &t.xyz))
+            .map(|t| t.multiplicity)
+            .collect();
+        if singular && p.multiplicity > 1 {
+            inside.iter().sum::<u32>() <= 2
+        } else {
+            inside.len() == 1
+        }
+    };
+    if !points.iter().all(box_holds) {
         return false;
     }
     if !c.complete {
