@@ -59,7 +59,7 @@ fn signs(v: &Value) -> [usize; 3] {
 }
 
 /// The `points` of the polylines drawn in `colour` (`#RRGGBB`).
-fn polylines<'a>(svg: &'a str, colour: &str) -> Vec<Vec<(i64, i64)>> {
+fn polylines(svg: &str, colour: &str) -> Vec<Vec<(i64, i64)>> {
     svg.lines()
         .filter(|l| l.starts_with("<polyline") && l.contains(&format!("stroke=\"{colour}\"")))
         .map(|l| {

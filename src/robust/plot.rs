@@ -178,7 +178,7 @@ pub fn cost_svg(table: &CurvedTable) -> Result<String, PlotError> {
     gap_chart(
         table,
         "geocert certified: precision that decided, by gap",
-        "bits (mean)",
+        "bits, mean (MPFR precision, or the largest exact number's size)",
         top * 1.1,
         |r| r.bits_mean(),
     )

@@ -95,7 +95,7 @@ pub fn truth(case: &CurvedCase) -> Truth {
             minor,
         } => line_torus(o, d, c, *major, *minor),
         Data::Circles2 { c1, r1, c2, r2 } => {
-            let r1 = Rational::from(q(*r1) * q(*r1));
+            let r1 = q(*r1) * q(*r1);
             circles(&qv(c1), &r1, &qv(c2), *r2, None)
         }
         Data::CircleEllipse2 { c, rho, e, a, b } => circle_ellipse(c, *rho, e, *a, *b),
@@ -118,7 +118,7 @@ fn line_quadratic<const D: usize>(
     b: &Rational,
     k: &Rational,
 ) -> Vec<TruePoint> {
-    let disc = Rational::from(b * b) - Rational::from(4 * Rational::from(a * k));
+    let disc: Rational = Rational::from(b * b) - 4 * Rational::from(a * k);
     let at = |t: Float| -> Vec<Float> {
         (0..D)
             .map(|i| f(&o[i]) + Float::with_val(PREC, &t * &f(&d[i])))
@@ -145,8 +145,8 @@ fn line_sphere(o: &[f64; 3], d: &[f64; 3], c: &[f64; 3], r: f64) -> Vec<TruePoin
     let (o, d, c) = (qv(o), qv(d), qv(c));
     let w = sub(&o, &c);
     let a = dot(&d, &d);
-    let b = Rational::from(2 * dot(&d, &w));
-    let k = dot(&w, &w) - Rational::from(q(r) * q(r));
+    let b = 2 * dot(&d, &w);
+    let k = dot(&w, &w) - q(r) * q(r);
     line_quadratic(&o, &d, &a, &b, &k)
 }
 
@@ -164,10 +164,10 @@ fn line_torus(o: &[f64; 3], d: &[f64; 3], c: &[f64; 3], major: f64, minor: f64) 
     let (o2, d2) = ([o[0].clone(), o[1].clone()], [d[0].clone(), d[1].clone()]);
     let p = sub(&o2, &[c[0].clone(), c[1].clone()]);
     let a = dot(&d2, &d2);
-    let b = Rational::from(2 * dot(&d2, &p));
+    let b = 2 * dot(&d2, &p);
     let cc = dot(&p, &p);
     // Squared distance from the axis to the line: C − B²/(4A).
-    let dist2 = Rational::from(&cc - Rational::from(&b * &b) / Rational::from(4 * &a));
+    let dist2 = &cc - Rational::from(&b * &b) / Rational::from(4 * &a);
     let big2 = Rational::from(&big * &big);
     let mut points = Vec::new();
     let sides: &[i32] = if w2.cmp0() == Ordering::Equal {
@@ -178,7 +178,7 @@ fn line_torus(o: &[f64; 3], d: &[f64; 3], c: &[f64; 3], major: f64, minor: f64) 
     for &s in sides {
         // sign(ρ² − dist²) with ρ = R + s·w: sign(R² + w² − dist² + 2sR·w).
         let x = Rational::from(&big2 + &w2) - &dist2;
-        let y = Rational::from(4 * Rational::from(&big2 * &w2));
+        let y = 4 * Rational::from(&big2 * &w2);
         let disc_sign = sign_surd(&x, s, &y);
         if disc_sign == Ordering::Less {
             continue;
@@ -224,12 +224,12 @@ fn circles<const D: usize>(
     r2: f64,
     frame: Option<&Plane>,
 ) -> Vec<TruePoint> {
-    let r2sq = Rational::from(q(r2) * q(r2));
+    let r2sq = q(r2) * q(r2);
     let dd = sub(c2, c1);
     let d2 = dot(&dd, &dd);
     let m = Rational::from(&d2 + r1sq) - &r2sq;
     // 4D²·h² = 4D²r₁² − (D² + r₁² − r₂²)²
-    let h4 = Rational::from(4 * Rational::from(&d2 * r1sq)) - Rational::from(&m * &m);
+    let h4: Rational = 4 * Rational::from(&d2 * r1sq) - Rational::from(&m * &m);
     let dist = fsqrt(&d2);
     let a = f(&m) / Float::with_val(PREC, 2 * &dist);
     let u: Vec<Float> = dd.iter().map(|x| f(x) / &dist).collect();
@@ -299,8 +299,8 @@ fn circle_ellipse(c: &[f64; 2], rho: f64, e: &[f64; 2], a: f64, b: f64) -> Vec<T
     let (a2, b2) = (Rational::from(&a * &a), Rational::from(&b * &b));
     let qa = Rational::from(1) - Rational::from(&a2 / &b2);
     let qb = Rational::from(-2 * &k);
-    let qc = Rational::from(&a2 + Rational::from(&k * &k)) - Rational::from(&rho * &rho);
-    let disc = Rational::from(&qb * &qb) - Rational::from(4 * Rational::from(&qa * &qc));
+    let qc = &a2 + Rational::from(&k * &k) - Rational::from(&rho * &rho);
+    let disc: Rational = Rational::from(&qb * &qb) - 4 * Rational::from(&qa * &qc);
     if disc.cmp0() == Ordering::Less {
         return vec![];
     }
@@ -310,8 +310,7 @@ fn circle_ellipse(c: &[f64; 2], rho: f64, e: &[f64; 2], a: f64, b: f64) -> Vec<T
     for &s in signs {
         // y − b and y + b, y = (−B + s√Δ)/(2A): sign(−B ∓ 2Ab + s√Δ)·sign(A).
         let side = |pm: i32| {
-            let x = Rational::from(-&qb)
-                - Rational::from(pm * Rational::from(2 * Rational::from(&qa * &b)));
+            let x = Rational::from(-&qb) - pm * (2 * Rational::from(&qa * &b));
             let sg = sign_surd(&x, s, &disc);
             if qa.cmp0() == Ordering::Less {
                 sg.reverse()
@@ -352,9 +351,8 @@ fn circle_sphere(qc: &[f64; 3], n: &[f64; 3], rho: f64, c: &[f64; 3], r: f64) ->
     let nn = dot(&nq, &nq);
     let e = dot(&sub(&qc, &c), &nq);
     let lambda = Rational::from(&e / &nn);
-    let centre: [Rational; 3] =
-        std::array::from_fn(|i| Rational::from(&c[i] + Rational::from(&lambda * &nq[i])));
-    let r1sq = Rational::from(q(r) * q(r)) - Rational::from(&e * &lambda);
+    let centre: [Rational; 3] = std::array::from_fn(|i| &c[i] + Rational::from(&lambda * &nq[i]));
+    let r1sq = q(r) * q(r) - Rational::from(&e * &lambda);
     if r1sq.cmp0() != Ordering::Greater {
         return vec![];
     }
