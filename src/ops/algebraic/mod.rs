@@ -20,14 +20,17 @@ mod bivariate;
 mod conic;
 mod conic_conic;
 mod conic_plane;
+pub(crate) mod curve_on_surface;
 mod exact;
 mod foot2;
 mod line;
 mod line_surface;
+mod on_surface;
 pub(crate) mod pairs;
 mod params;
 mod quadric;
 mod rounding;
+pub(crate) mod three_spheres;
 
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
 pub(crate) use foot2::project_point_conic2;
