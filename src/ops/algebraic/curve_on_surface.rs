@@ -42,7 +42,7 @@ use super::rounding::{correctly_rounded, PRECISION_CAP};
 use crate::certificate::{Arithmetic, Certified};
 use crate::curve::AnyCurve3;
 use crate::num::round::{round_rational, Rounded};
-use crate::num::{MpfrInterval, Real};
+use crate::num::MpfrInterval;
 use crate::ops::answer::{Answer, ExactPoint, Point, SegmentAnswer};
 use crate::ops::closed_surface::is_closed_shell;
 use crate::ops::section::surd::rational_sqrt;

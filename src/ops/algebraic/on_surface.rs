@@ -243,3 +243,7 @@ pub(super) fn conic_frame(c: &Analytic) -> Option<ConicFrame> {
         z,
     })
 }
+
+#[cfg(test)]
+#[path = "on_surface_tests.rs"]
+mod tests;
