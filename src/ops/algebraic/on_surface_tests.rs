@@ -13,7 +13,7 @@ use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
 use crate::ops::algebraic::curve_on_surface::{curve_on_surface, line_on_surface};
 use crate::ops::answer::Answer;
-use crate::ops::shape::{Linear, Shape};
+use crate::ops::shape::{Linear, LinearObject};
 use crate::surface::quadrics::{Cylinder, Hyperboloid, Sheets, Sphere};
 use crate::surface::torus::Torus;
 use crate::surface::AnySurface;
@@ -85,12 +85,10 @@ fn circles_one_ulp_off_spheres_and_tori_are_not_on_them() {
 }
 
 fn line(o: [f64; 3], d: [f64; 3]) -> Linear {
-    let v = serde_json::json!({"type": "line", "origin": o, "dir": d});
-    let spec = crate::io::objects::parse_object(v, "l").unwrap();
-    let Shape::Linear(l) = crate::io::shape(&spec, "l").unwrap() else {
-        panic!("not a line");
-    };
-    l
+    let v = |x: [f64; 3]| nalgebra::Vector3::new(x[0], x[1], x[2]);
+    Linear::Double(LinearObject::Line(
+        crate::geom::Line::new(v(o), v(d)).unwrap(),
+    ))
 }
 
 #[test]
