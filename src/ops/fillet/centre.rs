@@ -114,8 +114,8 @@ impl CentreCurve {
             }
             (Face::Sphere(_), b) if is_plane(b) => CentreForm::SpherePlane { sphere: 0 },
             (a, Face::Sphere(_)) if is_plane(a) => CentreForm::SpherePlane { sphere: 1 },
-            (Face::Cylinder(_), b) if is_plane(b) => CentreForm::PlaneCylinder { cylinder: 0 },
-            (a, Face::Cylinder(_)) if is_plane(a) => CentreForm::PlaneCylinder { cylinder: 1 },
+            (Face::Cylinder(_), b) if is_plane(b) => plane_cylinder(&faces, 0)?,
+            (a, Face::Cylinder(_)) if is_plane(a) => plane_cylinder(&faces, 1)?,
             (Face::Cylinder(_), Face::Cylinder(_)) => {
                 let probe = curve(CentreForm::PlanePlane, turn, true);
                 return Ok(cylinder_branches(&probe)?
@@ -286,6 +286,22 @@ impl CentreCurve {
     }
 }
 
+/// Plane / cylinder with the cylinder at index `cylinder`. Errors: a plane parallel to
+/// the axis in f64 (the centre curves are lines, `unsupported`).
+fn plane_cylinder(faces: &[Face; 2], cylinder: usize) -> Result<CentreForm, GeomError> {
+    let Face::Cylinder(c) = &faces[cylinder] else {
+        return Err(unsupported("expected a cylinder"));
+    };
+    let m = faces[1 - cylinder].plane_form(&0.0).map_or([0.0; 3], |p| p.m);
+    if dot(&m, &c.frame.axes(&0.0)[2]).abs() <= 1e-12 {
+        return Err(unsupported(
+            "the plane is parallel to the cylinder's axis: the centre curves are lines, \
+             not in this build",
+        ));
+    }
+    Ok(CentreForm::PlaneCylinder { cylinder })
+}
+
 /// Two orthonormal vectors `E₁ = normalize(m × e_k)`, `E₂ = m × E₁` perpendicular to
 /// the unit `m`, `e_k` the coordinate vector least aligned with `m` (chosen from the
 /// midpoint, so one choice serves a whole evaluation).
@@ -329,10 +345,9 @@ fn cylinder_branches(probe: &CentreCurve) -> Result<Vec<CentreForm>, GeomError> 
                  not in this build",
             ));
         }
-        if max < 0.0 {
-            return Ok(Vec::new());
-        }
-        if min > 0.0 {
+        // Negative everywhere (no branch): both roots of this angle, which the proof
+        // then finds absent over the whole range.
+        if min > 0.0 || max < 0.0 {
             return Ok([1.0, -1.0]
                 .map(|branch| CentreForm::CylinderCylinder { param, branch })
                 .to_vec());

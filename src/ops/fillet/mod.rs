@@ -231,6 +231,14 @@ fn judge(cover: &Cover, curve: &CentreCurve) -> Result<(Status, Option<String>),
             t,
             value,
         } if !(*value > DELTA_TAN * DELTA_TAN) => Err(tangent(*t)),
+        // The offsets touch (a circle of radius 0): tangent faces when the normals
+        // are parallel there.
+        Verdict::Fails { condition: Condition::Real, t }
+        | Verdict::Undecided { condition: Condition::Real, t, .. }
+            if transversality(curve, 0.5 * (t[0] + t[1])) <= DELTA_TAN * DELTA_TAN =>
+        {
+            Err(tangent(*t))
+        }
         Verdict::Fails { condition, t } | Verdict::Undecided { condition, t, .. } => {
             let what = match condition {
                 Condition::Real => "the closed-form centre curve is not proven real".to_string(),
@@ -239,13 +247,21 @@ fn judge(cover: &Cover, curve: &CentreCurve) -> Result<(Status, Option<String>),
                     format!("the contact on objects[{k}] is not proven inside its domain")
                 }
             };
-            let _ = curve;
             Ok((
                 Status::Undecided,
                 Some(format!("{what} near t ∈ [{}, {}]", t[0], t[1])),
             ))
         }
     }
+}
+
+/// `|m × n|²` at `t`, f64 (a float estimate for the degenerate-case test only).
+fn transversality(curve: &CentreCurve, t: f64) -> f64 {
+    curve
+        .conditions(&t)
+        .into_iter()
+        .find(|(_, c)| *c == Condition::Transversal)
+        .map_or(f64::NAN, |(v, _)| v)
 }
 
 fn answer(kind: BlendKind, sector: Sector, components: Vec<BlendComponent>) -> Certified<Answer> {

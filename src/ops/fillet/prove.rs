@@ -15,7 +15,7 @@ use crate::num::{Interval, Real};
 pub enum Verdict {
     /// Every condition is proven positive over the whole range.
     Proven,
-    /// `condition` is proven non-positive over the box `t` (the whole box fails).
+    /// `condition` is proven negative over the box `t` (the whole box fails).
     Fails { condition: Condition, t: [f64; 2] },
     /// `condition` could not be decided on the box `t` (its midpoint value `value`).
     Undecided {
@@ -30,7 +30,7 @@ pub enum Verdict {
 pub struct Cover {
     /// The first failure or undecided box, or `Proven`.
     pub verdict: Verdict,
-    /// The `Real` condition is proven non-positive on every box (the curve does not
+    /// The `Real` condition is proven negative on every box (the curve does not
     /// exist: the offsets do not meet).
     pub absent: bool,
 }
@@ -44,7 +44,7 @@ fn classify(curve: &CentreCurve, t: [f64; 2]) -> Verdict {
     let mut undecided = None;
     for (value, condition) in &conditions {
         let (lo, hi) = value.bounds();
-        if value.is_empty() || hi <= 0.0 {
+        if value.is_empty() || hi < 0.0 {
             return Verdict::Fails {
                 condition: *condition,
                 t,
