@@ -7,7 +7,9 @@
 
 use geocert::num::rng::Rng;
 use geocert::num::MpfrInterval;
-use geocert::ops::fillet::{end_tangency, BlendSpec, CentreCurve, Face, FilletSurface, SectorChoice};
+use geocert::ops::fillet::{
+    end_tangency, BlendSpec, CentreCurve, Face, FilletSurface, SectorChoice,
+};
 use geocert::ops::{Answer, BlendAnswer, Options, Shape};
 use geocert::surface::plane::Plane;
 use geocert::surface::quadrics::{Cylinder, Sphere};
@@ -27,7 +29,9 @@ fn cylinder(origin: [f64; 3], r: f64, axis: [f64; 3], height: [f64; 2]) -> Shape
 }
 
 fn sphere(center: [f64; 3], r: f64) -> Shape {
-    Shape::Surface(AnySurface::Sphere(Sphere::new(center, r, None, None).unwrap()))
+    Shape::Surface(AnySurface::Sphere(
+        Sphere::new(center, r, None, None).unwrap(),
+    ))
 }
 
 fn spec(sector: u8, range: Option<[f64; 2]>, grid: [usize; 2]) -> BlendSpec {
@@ -109,9 +113,20 @@ fn worked_example_16_13_fillet() {
     assert_eq!(st.cos_phi, 0.0);
 }
 
-fn fillet_surface(a: &Shape, b: &Shape, rho: f64, sector: u8, range: Option<[f64; 2]>) -> Vec<FilletSurface> {
-    let faces = [Face::of_shape(a, "a").unwrap(), Face::of_shape(b, "b").unwrap()];
-    let signs = geocert::ops::fillet::Sector::from_number(sector).unwrap().signs();
+fn fillet_surface(
+    a: &Shape,
+    b: &Shape,
+    rho: f64,
+    sector: u8,
+    range: Option<[f64; 2]>,
+) -> Vec<FilletSurface> {
+    let faces = [
+        Face::of_shape(a, "a").unwrap(),
+        Face::of_shape(b, "b").unwrap(),
+    ];
+    let signs = geocert::ops::fillet::Sector::from_number(sector)
+        .unwrap()
+        .signs();
     CentreCurve::new(faces, signs.map(|s| s * rho), range)
         .unwrap()
         .into_iter()
@@ -159,7 +174,10 @@ fn plane_cylinder_contact_curves_are_the_closed_forms() {
         let pl = plane([0.0, 0.0, h], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
         let cy = cylinder(o, r, [0.0, 0.0, 1.0], [-8.0, 8.0]);
         let cyl_first = rng.coin();
-        let (sp, sc) = (if rng.coin() { 1.0 } else { -1.0 }, if rng.coin() { 1.0 } else { -1.0 });
+        let (sp, sc) = (
+            if rng.coin() { 1.0 } else { -1.0 },
+            if rng.coin() { 1.0 } else { -1.0 },
+        );
         let sector = match if cyl_first { (sc, sp) } else { (sp, sc) } {
             (a, b) if a > 0.0 && b > 0.0 => 1,
             (a, _) if a > 0.0 => 2,
@@ -175,15 +193,17 @@ fn plane_cylinder_contact_curves_are_the_closed_forms() {
         for (i, &t) in k.grid.t.iter().enumerate() {
             let (ti, rr) = (m(t), m(r) + m(sc * rho));
             let zc = m(h) + m(sp * rho);
-            let centre = [m(o[0]) + rr.clone() * ti.cos(), m(o[1]) + rr.clone() * ti.sin(), zc.clone()];
-            let on_cyl = [m(o[0]) + m(r) * ti.cos(), m(o[1]) + m(r) * ti.sin(), zc.clone()];
+            let centre = [
+                m(o[0]) + rr.clone() * ti.cos(),
+                m(o[1]) + rr.clone() * ti.sin(),
+                zc.clone(),
+            ];
+            let on_cyl = [
+                m(o[0]) + m(r) * ti.cos(),
+                m(o[1]) + m(r) * ti.sin(),
+                zc.clone(),
+            ];
             let on_plane = [centre[0].clone(), centre[1].clone(), m(h)];
-            let vb: Vec<[f64; 2]> = k.spine.points[i]
-                .xyz
-                .iter()
-                .map(|&x| [x - 1e-300, x + 1e-300])
-                .collect();
-            let _ = vb;
             assert_box_contains(&k.contacts[ic][i].xyz_box, &on_cyl, "cylinder contact");
             assert_box_contains(&k.contacts[ip][i].xyz_box, &on_plane, "plane contact");
             let pb = k.contacts[ic][i].param_box.as_ref().unwrap();
@@ -219,8 +239,9 @@ fn cylinder_cylinder_contact_curves_are_the_closed_forms() {
         let a = cylinder([0.0; 3], r1, [0.0, 0.0, 1.0], [-16.0, 16.0]);
         let b = cylinder([-16.0, 0.0, 0.0], r2, [1.0, 0.0, 0.0], [0.0, 32.0]);
         let sector = [1, 2, 3, 4][rng.below(4)];
-        let signs = geocert::ops::fillet::Sector::from_number(sector).unwrap().signs();
-        let (r1p, r2p) = (r1 + signs[0] * rho, r2 + signs[1] * rho);
+        let signs = geocert::ops::fillet::Sector::from_number(sector)
+            .unwrap()
+            .signs();
         let (ans, status) = blend(&a, &b, rho, &spec(sector, None, [13, 3]));
         assert_eq!(status, Status::Verified, "{sector}");
         assert_eq!(ans.components.len(), 2);
@@ -233,14 +254,17 @@ fn cylinder_cylinder_contact_curves_are_the_closed_forms() {
                 let centre = [r1i.clone() * ti.cos(), r1i * ti.sin(), v.clone()];
                 let on_a = [m(r1) * ti.cos(), m(r1) * ti.sin(), v];
                 let scale = m(r2) / r2i;
-                let on_b = [centre[0].clone(), centre[1].clone() * scale.clone(), centre[2].clone() * scale];
+                let on_b = [
+                    centre[0].clone(),
+                    centre[1].clone() * scale.clone(),
+                    centre[2].clone() * scale,
+                ];
                 assert_box_contains(&k.contacts[0][i].xyz_box, &on_a, "contact on A");
                 assert_box_contains(&k.contacts[1][i].xyz_box, &on_b, "contact on B");
                 assert!(dist(&k.spine.points[i].xyz, &centre) <= k.spine.points[i].bound.unwrap());
             }
             components += 1;
         }
-        let _ = (r1p, r2p);
     }
     assert_eq!(components, 120);
 }
@@ -272,7 +296,13 @@ fn sphere_plane_centres_lie_on_the_closed_form_circle() {
         }
         let sp = sphere(c, r);
         let pl = plane([0.0, 0.0, h], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
-        let got = geocert::ops::fillet(&sp, &pl, rho, &spec(sector, None, [17, 3]), &Options::default());
+        let got = geocert::ops::fillet(
+            &sp,
+            &pl,
+            rho,
+            &spec(sector, None, [17, 3]),
+            &Options::default(),
+        );
         let got = match got {
             Err(e) => {
                 assert_eq!(e.kind(), "degenerate_blend", "{e}");
@@ -280,7 +310,9 @@ fn sphere_plane_centres_lie_on_the_closed_form_circle() {
             }
             Ok(g) => g,
         };
-        let Answer::Blend(b) = got.value else { panic!() };
+        let Answer::Blend(b) = got.value else {
+            panic!()
+        };
         if rc2 < 0.0 {
             assert!(b.components.is_empty());
             assert!(got.complete);
@@ -293,7 +325,12 @@ fn sphere_plane_centres_lie_on_the_closed_form_circle() {
             let (dx, dy) = (m(v.xyz[0]) - m(c[0]), m(v.xyz[1]) - m(c[1]));
             let radial = (dx.sqr() + dy.sqr()).sqrt() - rc.clone();
             let off = (radial.sqr() + (m(v.xyz[2]) - m(hp)).sqr()).sqrt();
-            assert!(off.lo_f64() <= v.bound.unwrap(), "{} > {:?}", off.lo_f64(), v.bound);
+            assert!(
+                off.lo_f64() <= v.bound.unwrap(),
+                "{} > {:?}",
+                off.lo_f64(),
+                v.bound
+            );
         }
         circles += 1;
     }
@@ -328,20 +365,34 @@ fn fillet_points_lie_at_distance_rho_and_are_g1_with_both_faces() {
                         d: rng.unit(),
                     }),
                 ));
-                let b = cylinder([rng.unit(), rng.unit(), -50.0], r, [0.0, 0.0, 1.0], [0.0, 100.0]);
+                let b = cylinder(
+                    [rng.unit(), rng.unit(), -50.0],
+                    r,
+                    [0.0, 0.0, 1.0],
+                    [0.0, 100.0],
+                );
                 fillet_surface(&a, &b, rho, sector, None)
             }
             2 => {
                 let r1 = rho * (1.2 + rng.unit().abs());
                 let r2 = r1 + 2.5 * rho + rng.unit().abs();
                 let a = cylinder([0.0; 3], r1, [0.0, 0.0, 1.0], [-50.0, 50.0]);
-                let b = cylinder([-50.0, 0.0, rng.unit() * 0.1], r2, [1.0, 0.0, rng.unit() * 0.1], [0.0, 100.0]);
+                let b = cylinder(
+                    [-50.0, 0.0, rng.unit() * 0.1],
+                    r2,
+                    [1.0, 0.0, rng.unit() * 0.1],
+                    [0.0, 100.0],
+                );
                 fillet_surface(&a, &b, rho, sector, None)
             }
             _ => {
                 let r = rho * (1.5 + rng.unit().abs() * 3.0);
                 let a = sphere([rng.unit(), rng.unit(), rng.unit()], r);
-                let b = plane([0.0, 0.0, rng.unit() * 0.3 * r], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+                let b = plane(
+                    [0.0, 0.0, rng.unit() * 0.3 * r],
+                    [1.0, 0.0, 0.0],
+                    [0.0, 1.0, 0.0],
+                );
                 fillet_surface(&a, &b, rho, sector, None)
             }
         };
@@ -360,9 +411,15 @@ fn fillet_points_lie_at_distance_rho_and_are_g1_with_both_faces() {
                     .map(|k| (p[k].clone() - st.centre[k].clone()).sqr())
                     .fold(m(0.0), |a, b| a + b)
                     - m(rho).sqr();
-                assert!(d2.contains(0.0) && d2.width() < 1e-60, "case {case}: {d2:?}");
+                assert!(
+                    d2.contains(0.0) && d2.width() < 1e-60,
+                    "case {case}: {d2:?}"
+                );
                 for (k, tan) in end_tangency(f, &ti).iter().enumerate() {
-                    assert!(tan.contains(0.0) && tan.width() < 1e-60, "case {case} end {k}");
+                    assert!(
+                        tan.contains(0.0) && tan.width() < 1e-60,
+                        "case {case} end {k}"
+                    );
                 }
                 for (k, zend) in [0.0, 1.0].into_iter().enumerate() {
                     let j = f.jet(&ti, &m(zend), 1);
@@ -370,7 +427,10 @@ fn fillet_points_lie_at_distance_rho_and_are_g1_with_both_faces() {
                     let par = cross(&normal, &st.normal[k]);
                     let scale = norm(&normal).hi_f64().max(1.0);
                     for c in &par {
-                        assert!(c.contains(0.0) && c.width() < 1e-60 * scale, "case {case} G1 {k}");
+                        assert!(
+                            c.contains(0.0) && c.width() < 1e-60 * scale,
+                            "case {case} G1 {k}"
+                        );
                     }
                 }
                 samples += 1;
@@ -403,38 +463,102 @@ fn degenerate_cases_are_typed_errors() {
     // a radius at or above the curvature radius on the concave side (inside)
     for rho in [1.0, 1.5, 1.0f64.next_up()] {
         let got = geocert::ops::fillet(&ball, &ground, rho, &spec(3, None, [5, 3]), &o);
-        assert_eq!(error_kind(got), ("degenerate_blend".into(), "radius".into()));
+        assert_eq!(
+            error_kind(got),
+            ("degenerate_blend".into(), "radius".into())
+        );
     }
     for rho in [2.0, 3.0] {
         let got = geocert::ops::fillet(&ground, &pipe, rho, &spec(2, None, [5, 3]), &o);
-        assert_eq!(error_kind(got), ("degenerate_blend".into(), "radius".into()));
+        assert_eq!(
+            error_kind(got),
+            ("degenerate_blend".into(), "radius".into())
+        );
     }
     // just below: a fillet
-    let got = geocert::ops::fillet(&ground, &pipe, 2.0f64.next_down(), &spec(2, None, [5, 3]), &o);
+    let got = geocert::ops::fillet(
+        &ground,
+        &pipe,
+        2.0f64.next_down(),
+        &spec(2, None, [5, 3]),
+        &o,
+    );
     assert!(got.is_ok());
     // a sphere touching the plane z = 1 from below: the faces are tangent there
     let lid = plane([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
     let got = geocert::ops::fillet(&ball, &lid, 0.25, &spec(3, None, [5, 3]), &o);
-    assert_eq!(error_kind(got), ("degenerate_blend".into(), "objects".into()));
+    assert_eq!(
+        error_kind(got),
+        ("degenerate_blend".into(), "objects".into())
+    );
     // parallel and coincident planes
     for h in [0.0, 1.0] {
         let other = plane([0.0, 0.0, h], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]);
-        let got = geocert::ops::fillet(&ground, &other, 0.5, &spec(1, Some([0.0, 1.0]), [5, 3]), &o);
-        assert_eq!(error_kind(got), ("degenerate_blend".into(), "objects".into()));
-        let got = geocert::ops::chamfer(&ground, &other, [0.5, 0.5], &spec(1, Some([0.0, 1.0]), [5, 3]), &o);
-        assert_eq!(error_kind(got), ("degenerate_blend".into(), "objects".into()));
+        let got =
+            geocert::ops::fillet(&ground, &other, 0.5, &spec(1, Some([0.0, 1.0]), [5, 3]), &o);
+        assert_eq!(
+            error_kind(got),
+            ("degenerate_blend".into(), "objects".into())
+        );
+        let got = geocert::ops::chamfer(
+            &ground,
+            &other,
+            [0.5, 0.5],
+            &spec(1, Some([0.0, 1.0]), [5, 3]),
+            &o,
+        );
+        assert_eq!(
+            error_kind(got),
+            ("degenerate_blend".into(), "objects".into())
+        );
     }
     // bad input
     let wall = plane([0.0; 3], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]);
     let cases: Vec<(Result<_, _>, (&str, &str))> = vec![
-        (geocert::ops::fillet(&ground, &wall, -1.0, &spec(3, Some([0.0, 1.0]), [5, 3]), &o), ("invalid_value", "radius")),
-        (geocert::ops::fillet(&ground, &wall, f64::NAN, &spec(3, Some([0.0, 1.0]), [5, 3]), &o), ("invalid_value", "radius")),
-        (geocert::ops::fillet(&ground, &wall, 1.0, &spec(5, Some([0.0, 1.0]), [5, 3]), &o), ("invalid_value", "sector")),
-        (geocert::ops::fillet(&ground, &wall, 1.0, &spec(3, None, [5, 3]), &o), ("format", "range")),
-        (geocert::ops::fillet(&ground, &wall, 1.0, &spec(3, Some([1.0, 0.0]), [5, 3]), &o), ("empty_domain", "range")),
-        (geocert::ops::fillet(&ground, &wall, 1.0, &spec(3, Some([0.0, 1.0]), [1, 3]), &o), ("invalid_value", "grid")),
-        (geocert::ops::chamfer(&ground, &pipe, [1.0, 1.0], &spec(3, None, [5, 3]), &o), ("unsupported", "objects")),
-        (geocert::ops::chamfer(&ground, &wall, [1.0, 0.0], &spec(3, Some([0.0, 1.0]), [5, 3]), &o), ("invalid_value", "legs[1]")),
+        (
+            geocert::ops::fillet(&ground, &wall, -1.0, &spec(3, Some([0.0, 1.0]), [5, 3]), &o),
+            ("invalid_value", "radius"),
+        ),
+        (
+            geocert::ops::fillet(
+                &ground,
+                &wall,
+                f64::NAN,
+                &spec(3, Some([0.0, 1.0]), [5, 3]),
+                &o,
+            ),
+            ("invalid_value", "radius"),
+        ),
+        (
+            geocert::ops::fillet(&ground, &wall, 1.0, &spec(5, Some([0.0, 1.0]), [5, 3]), &o),
+            ("invalid_value", "sector"),
+        ),
+        (
+            geocert::ops::fillet(&ground, &wall, 1.0, &spec(3, None, [5, 3]), &o),
+            ("format", "range"),
+        ),
+        (
+            geocert::ops::fillet(&ground, &wall, 1.0, &spec(3, Some([1.0, 0.0]), [5, 3]), &o),
+            ("empty_domain", "range"),
+        ),
+        (
+            geocert::ops::fillet(&ground, &wall, 1.0, &spec(3, Some([0.0, 1.0]), [1, 3]), &o),
+            ("invalid_value", "grid"),
+        ),
+        (
+            geocert::ops::chamfer(&ground, &pipe, [1.0, 1.0], &spec(3, None, [5, 3]), &o),
+            ("unsupported", "objects"),
+        ),
+        (
+            geocert::ops::chamfer(
+                &ground,
+                &wall,
+                [1.0, 0.0],
+                &spec(3, Some([0.0, 1.0]), [5, 3]),
+                &o,
+            ),
+            ("invalid_value", "legs[1]"),
+        ),
     ];
     for (got, (kind, field)) in cases {
         assert_eq!(error_kind(got), (kind.to_string(), field.to_string()));
@@ -464,12 +588,27 @@ fn cli_cases_answer_and_name_missing_fields() {
     assert_eq!(r["blend"]["sector"], 1);
     // a closed spine: 5 stations, the first repeated last
     assert_eq!(r["curves"][0]["points"].as_array().unwrap().len(), 6);
-    assert_eq!(r["blend"]["components"][0]["grid"]["points"][0].as_array().unwrap().len(), 3);
-    assert_eq!(r["curves"][0]["points"][0]["xyz"], serde_json::json!([2.5, 0.0, 0.5]));
-    let r = solve(r#"{"op": "fillet", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "normal": [1,0,0], "d": 0}], "sector": 3, "range": [0, 1]}"#);
+    assert_eq!(
+        r["blend"]["components"][0]["grid"]["points"][0]
+            .as_array()
+            .unwrap()
+            .len(),
+        3
+    );
+    assert_eq!(
+        r["curves"][0]["points"][0]["xyz"],
+        serde_json::json!([2.5, 0.0, 0.5])
+    );
+    let r = solve(
+        r#"{"op": "fillet", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "normal": [1,0,0], "d": 0}], "sector": 3, "range": [0, 1]}"#,
+    );
     assert_eq!(r["error"]["field"], "radius", "{r}");
-    let r = solve(r#"{"op": "chamfer", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "normal": [1,0,0], "d": 0}], "legs": [1, 1], "range": [0, 1]}"#);
+    let r = solve(
+        r#"{"op": "chamfer", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "normal": [1,0,0], "d": 0}], "legs": [1, 1], "range": [0, 1]}"#,
+    );
     assert_eq!(r["error"]["field"], "sector", "{r}");
-    let r = solve(r#"{"op": "chamfer", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "cone", "origin": [0,0,0], "radius": 1, "half_angle": 0.3, "axis": [0,0,1], "height": [0,1]}], "legs": [1, 1], "sector": 3}"#);
+    let r = solve(
+        r#"{"op": "chamfer", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "cone", "origin": [0,0,0], "radius": 1, "half_angle": 0.3, "axis": [0,0,1], "height": [0,1]}], "legs": [1, 1], "sector": 3}"#,
+    );
     assert_eq!(r["error"]["field"], "objects[1].type", "{r}");
 }

@@ -126,11 +126,6 @@ impl ChamferSurface {
         let tau = [cross(m, &te), cross(&te, n)];
         [0, 1].map(|k| add_scaled(&st.centre, &-t.lift(self.offsets[k]), &tau[k]))
     }
-
-    /// `τᵢ·(cᵢ − q)`-free check used by tests: the edge point `q(t)`.
-    pub fn edge_point<T: Real>(&self, t: &T) -> [T; 3] {
-        self.edge.point(t)
-    }
 }
 
 impl BlendFormula for ChamferSurface {

@@ -292,7 +292,9 @@ fn plane_cylinder(faces: &[Face; 2], cylinder: usize) -> Result<CentreForm, Geom
     let Face::Cylinder(c) = &faces[cylinder] else {
         return Err(unsupported("expected a cylinder"));
     };
-    let m = faces[1 - cylinder].plane_form(&0.0).map_or([0.0; 3], |p| p.m);
+    let m = faces[1 - cylinder]
+        .plane_form(&0.0)
+        .map_or([0.0; 3], |p| p.m);
     if dot(&m, &c.frame.axes(&0.0)[2]).abs() <= 1e-12 {
         return Err(unsupported(
             "the plane is parallel to the cylinder's axis: the centre curves are lines, \
@@ -339,7 +341,7 @@ fn cylinder_branches(probe: &CentreCurve) -> Result<Vec<CentreForm>, GeomError> 
             max = max.max(disc);
             alpha = alpha.min(a);
         }
-        if !(alpha > 1e-12) {
+        if alpha.is_nan() || alpha <= 1e-12 {
             return Err(unsupported(
                 "the cylinders' axes are parallel: the centre curves are lines, \
                  not in this build",

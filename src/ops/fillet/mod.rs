@@ -230,13 +230,18 @@ fn judge(cover: &Cover, curve: &CentreCurve) -> Result<(Status, Option<String>),
             condition: Condition::Transversal,
             t,
             value,
-        } if !(*value > DELTA_TAN * DELTA_TAN) => Err(tangent(*t)),
+        } if value.is_nan() || *value <= DELTA_TAN * DELTA_TAN => Err(tangent(*t)),
         // The offsets touch (a circle of radius 0): tangent faces when the normals
         // are parallel there.
-        Verdict::Fails { condition: Condition::Real, t }
-        | Verdict::Undecided { condition: Condition::Real, t, .. }
-            if transversality(curve, 0.5 * (t[0] + t[1])) <= DELTA_TAN * DELTA_TAN =>
-        {
+        Verdict::Fails {
+            condition: Condition::Real,
+            t,
+        }
+        | Verdict::Undecided {
+            condition: Condition::Real,
+            t,
+            ..
+        } if transversality(curve, 0.5 * (t[0] + t[1])) <= DELTA_TAN * DELTA_TAN => {
             Err(tangent(*t))
         }
         Verdict::Fails { condition, t } | Verdict::Undecided { condition, t, .. } => {

@@ -50,7 +50,7 @@ fn classify(curve: &CentreCurve, t: [f64; 2]) -> Verdict {
                 t,
             };
         }
-        if !(lo > 0.0) && undecided.is_none() {
+        if (lo.is_nan() || lo <= 0.0) && undecided.is_none() {
             undecided = Some(*condition);
         }
     }

@@ -46,7 +46,7 @@ impl Stations for ChamferSurface {
 }
 
 fn bounds<const D: usize>(x: &[Interval; D]) -> [Bounds; D] {
-    x.clone().map(|c| [c.lo(), c.hi()])
+    x.map(|c| [c.lo(), c.hi()])
 }
 
 fn bounds_vec(x: &[Interval]) -> Vec<Bounds> {
