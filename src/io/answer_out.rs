@@ -133,6 +133,11 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
                 r.points = Some(c.points.iter().map(point).collect());
             }
         }
+        Answer::Blend(b) if b.components.is_empty() => r.points = Some(vec![]),
+        Answer::Blend(b) => {
+            r.curves = Some(b.components.iter().map(|k| curve(&k.spine, &[])).collect());
+            r.blend = Some(super::blend_out::blend(b));
+        }
         Answer::Plane | Answer::Coincident | Answer::CommonComponent => {}
     }
     r

@@ -195,6 +195,9 @@ pub struct CaseResult {
     /// Kind `curves` of a plane ∩ quadric: the exact conic (docs/FORMAT.md "Sections").
     #[serde(skip_serializing_if = "Option::is_none")]
     pub conic: Option<super::section_out::ConicOut>,
+    /// Kind `surface` (`fillet`, `chamfer`): the blend (docs/FORMAT.md "Blends").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub blend: Option<super::blend_out::BlendOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorOut>,
     /// `verify`: the verdict on each claimed item.
@@ -241,6 +244,7 @@ impl CaseResult {
             curves: None,
             singular_points: None,
             conic: None,
+            blend: None,
             claims: None,
             missed: None,
             error: Some(ErrorOut {
@@ -270,6 +274,7 @@ impl CaseResult {
             curves: None,
             singular_points: None,
             conic: None,
+            blend: None,
             error: None,
             claims: None,
             missed: None,
