@@ -2,7 +2,6 @@
 //! them into geometric objects, and writing results as JSON Lines.
 
 mod answer_out;
-pub mod blend_out;
 mod build;
 pub mod case;
 mod de;
