@@ -275,8 +275,7 @@ fn demo_status(id: &str) -> &'static str {
     match id {
         "nearest point of a torus"
         | "sphere ∩ sphere: a circle"
-        | "sphere ∩ ellipsoid"
-        | "three spheres" => "verified",
+        | "sphere ∩ ellipsoid" => "verified",
         "touching spheres" => "verified_singular",
         // One of the four branches is not proven to join (OPERATIONS.md §16.12 family).
         "Steinmetz: crossing cylinders" => "undecided",
