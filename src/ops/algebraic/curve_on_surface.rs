@@ -35,16 +35,16 @@ use rug::Rational;
 use std::cmp::Ordering;
 use std::rc::Rc;
 
-use crate::ops::rational::exact::dot;
 use super::on_surface::{conic_frame, cross, Implicit, V3};
 use super::pairs::{line3, ExactLine};
-use crate::ops::rational::rounding::{correctly_rounded, PRECISION_CAP};
 use crate::certificate::{Arithmetic, Certified};
 use crate::curve::AnyCurve3;
 use crate::num::round::{round_rational, Rounded};
 use crate::num::MpfrInterval;
 use crate::ops::answer::{Answer, ExactPoint, Point, SegmentAnswer};
 use crate::ops::closed_surface::is_closed_shell;
+use crate::ops::rational::exact::dot;
+use crate::ops::rational::rounding::{correctly_rounded, PRECISION_CAP};
 use crate::ops::rational::surd::rational_sqrt;
 use crate::ops::shape::Linear;
 use crate::surface::quadrics::Sheets;

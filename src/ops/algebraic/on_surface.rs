@@ -27,10 +27,10 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
-use crate::ops::rational::exact::dot;
-use crate::ops::rational::QuadricForm;
 use crate::curve::analytic::{Analytic, Shape as CurveShape};
 use crate::ops::closed_surface::frame_x_unnormalised;
+use crate::ops::rational::exact::dot;
+use crate::ops::rational::QuadricForm;
 use crate::surface::AnySurface;
 
 pub(super) type V3 = [Rational; 3];

@@ -24,7 +24,6 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
-use crate::ops::rational::exact::dot;
 use super::line::LineCut;
 use super::on_surface::cross;
 use super::pairs::{closed, not_correctly_rounded, point_box, surface_params, Closed};
@@ -32,6 +31,7 @@ use super::params::{line_hit_params, ClosedFrame};
 use super::{intersect_line_quadric_exact, QuadricForm};
 use crate::certificate::{Arithmetic, Certified};
 use crate::ops::answer::{Answer, ExactPoint, Point};
+use crate::ops::rational::exact::dot;
 use crate::ops::section::{conic_answer, section_plane_quadric, ExactPlane};
 use crate::surface::AnySurface;
 
