@@ -43,7 +43,10 @@ pub fn decide_cluster<S: System, I: CertInterval>(
 ) -> Option<ClusterVerdict<I>> {
     let m0 = boxes::midpoint_f64(hull);
     let (v0, u0, _) = null_vectors(&sys.jacobian(&m0))?;
-    let near = boxes::inflate(hull, 1.0, 0.0);
+    // the double root may lie a width away, or (a side of the hull narrowed to a few
+    // ulps) a few ulps of this precision away
+    let bits = hull.first()?.precision_bits();
+    let near = boxes::inflate_scaled(hull, 1.0, (-(f64::from(bits) - 8.0)).exp2());
     let dr = double_root(sys, &boxes::midpoint(hull), &v0, &u0, 1.0)
         .filter(|d| boxes::is_subset(&d.x, &near));
     // Near a double root the two roots lie about symmetrically about it, and subdivision

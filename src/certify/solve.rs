@@ -89,6 +89,13 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
                     // keep the lowest precision's; a higher one may still split it
                     singular.get_or_insert((enclosure, d, bits));
                 }
+                // Nothing proven at this precision, not even a singular box: the
+                // cluster is most often a simple root that subdivision at the next
+                // precision decides at once, where the cluster tests at every higher
+                // precision cost seconds to fail (issue 14: a circle 1e-9 from a
+                // torus tube spent 3 s in them); subdivide at the next level, which
+                // tries its own clusters again.
+                None if singular.is_none() => break,
                 None => {}
             }
             if decided {
