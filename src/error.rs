@@ -64,6 +64,11 @@ pub enum GeomError {
     /// The operation is not defined for these objects (yet).
     #[error("{field}: {reason}")]
     Unsupported { field: String, reason: String },
+    /// A blend that does not exist as asked (OPERATIONS.md §11.4 degenerate cases):
+    /// the faces are tangent across the edge, or the radius exceeds a face's radius of
+    /// curvature on the side of the blend.
+    #[error("{field}: {reason}")]
+    DegenerateBlend { field: String, reason: String },
 }
 
 impl GeomError {
@@ -83,6 +88,7 @@ impl GeomError {
             GeomError::ParameterOutsideDomain { .. } => "parameter_outside_domain",
             GeomError::InvalidValue { .. } => "invalid_value",
             GeomError::Unsupported { .. } => "unsupported",
+            GeomError::DegenerateBlend { .. } => "degenerate_blend",
         }
     }
 
@@ -101,7 +107,8 @@ impl GeomError {
             | GeomError::EmptyDomain { field, .. }
             | GeomError::ParameterOutsideDomain { field, .. }
             | GeomError::InvalidValue { field, .. }
-            | GeomError::Unsupported { field, .. } => field,
+            | GeomError::Unsupported { field, .. }
+            | GeomError::DegenerateBlend { field, .. } => field,
         }
     }
 
@@ -119,7 +126,8 @@ impl GeomError {
             | GeomError::EmptyDomain { field, .. }
             | GeomError::ParameterOutsideDomain { field, .. }
             | GeomError::InvalidValue { field, .. }
-            | GeomError::Unsupported { field, .. } => field,
+            | GeomError::Unsupported { field, .. }
+            | GeomError::DegenerateBlend { field, .. } => field,
         }
     }
 

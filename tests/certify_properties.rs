@@ -79,7 +79,7 @@ fn sound(
         let kinds_ok =
             (verified == truth.len() && singular == 0) || (verified == 0 && singular == 1);
         prop_assert!(
-            kinds_ok || !check_enabled("near_tangency_mixed_kinds"),
+            kinds_ok,
             "{} verified and {} singular boxes for {} roots",
             verified,
             singular,
@@ -177,11 +177,7 @@ proptest! {
         let c = Circles { a, ra2: ra * ra, ea: 0.0, b, rb2: rb * rb };
         let truth = truth_of(&c);
         let r = solve(&c, &DOMAIN, &Options::default()).unwrap();
-        prop_assert!(
-            r.complete || !check_enabled("near_tangency_partial_overlap"),
-            "{:?}",
-            r.value.undecided
-        );
+        prop_assert!(r.complete, "{:?}", r.value.undecided);
         // two verified boxes one-to-one, one singular box with a perturbation of at
         // least the closed-form gap, or (no root) nothing or such a singular box
         sound(&r, &truth, &c.least_perturbation())?;
@@ -240,11 +236,7 @@ proptest! {
         let sys = LineSphere { origin: [0.0, y, z], dir: [1.0, 0.0, 0.0] };
         let domain = [[-2.0, 2.0], [-3.1, 3.1], [-1.4, 1.4]];
         let r = solve(&sys, &domain, &Options::default()).unwrap();
-        prop_assert!(
-            r.complete || (k > 6 && !check_enabled("near_tangency_partial_overlap")),
-            "{:?}",
-            r.value.undecided
-        );
+        prop_assert!(r.complete, "{:?}", r.value.undecided);
         sound(&r, &truth, &LineSphere::least_perturbation(y, z))?;
         if k == 0 || k <= 6 && !miss {
             // well apart: two simple roots, both proven

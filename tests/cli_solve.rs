@@ -273,10 +273,9 @@ fn a_file_without_errors_exits_zero_and_demo_cases_all_solve() {
 /// are exact; the rest is certified numerically.
 fn demo_status(id: &str) -> &'static str {
     match id {
-        "nearest point of a torus"
-        | "sphere ∩ sphere: a circle"
-        | "sphere ∩ ellipsoid"
-        | "three spheres" => "verified",
+        "nearest point of a torus" | "sphere ∩ sphere: a circle" | "sphere ∩ ellipsoid" => {
+            "verified"
+        }
         "touching spheres" => "verified_singular",
         // One of the four branches is not proven to join (OPERATIONS.md §16.12 family).
         "Steinmetz: crossing cylinders" => "undecided",

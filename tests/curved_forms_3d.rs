@@ -122,44 +122,8 @@ fn tangency_verdict(r: &CaseResult, truths: &[Vec<Float>], least: &Float) -> Res
                 Err("a singular box misses a true point".into())
             }
         }
-        "verified_singular" if !runs(Some("near_tangency_mixed_kinds")) => {
-            // the known mixed answer, still held to soundness: every truth in exactly
-            // one box, a simple (multiplicity 1) box holding exactly one truth
-            for t in truths {
-                let k = boxes.iter().filter(|b| box_holds(b, t)).count();
-                if k != 1 {
-                    return Err(format!("a true point in {k} boxes"));
-                }
-            }
-            for p in r.points.iter().flatten() {
-                let k = truths.iter().filter(|t| box_holds(&p.bounds, t)).count();
-                if (p.multiplicity == 1 && k != 1) || k > 2 {
-                    return Err(format!(
-                        "a box of multiplicity {} holds {k}",
-                        p.multiplicity
-                    ));
-                }
-            }
-            Ok(())
-        }
         other => Err(format!("status {other} with {} boxes", boxes.len())),
     }
-}
-
-/// Defects of src/ these families expose, left out of the default run by name (they
-/// run with `GEOCERT_KNOWN_DEFECTS=1`); remove a name when its fix is merged.
-const KNOWN_DEFECTS: &[&str] = &[
-    // Near tangency (z₀ = 0.125 + 1e-9 above the lowest point of the line
-    // (−0.390625, 0.109375, z₀) + t(1, 1, 0) over the graph), the two crossings come
-    // back as one singular box and one verified box instead of two verified or one
-    // singular (sound, but not the expected kind).
-    "near_tangency_mixed_kinds",
-];
-
-/// True if cases of the family `defect` run (see [`KNOWN_DEFECTS`]).
-fn runs(defect: Option<&str>) -> bool {
-    !defect.is_some_and(|d| KNOWN_DEFECTS.contains(&d))
-        || std::env::var_os("GEOCERT_KNOWN_DEFECTS").is_some()
 }
 
 /// Lines along `(1, 1, 0)` at gaps `10^-k` (3 ≤ k ≤ 15) above and below tangency with

@@ -326,3 +326,30 @@ fn section_records_fit_the_schema() {
         assert!(schemas.validate(&r, index).is_ok(), "{r}");
     }
 }
+
+#[test]
+fn blend_records_fit_the_schema() {
+    let (schemas, index) = schema();
+    let cases = [
+        r#"{"op": "fillet", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "origin": [0,0,0], "u": [0,1,0], "v": [0,0,1]}], "radius": 1, "sector": 3, "range": [-1, 1], "grid": [3, 5]}"#,
+        r#"{"op": "fillet", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "cylinder", "origin": [0,0,-5], "radius": 2, "axis": [0,0,1], "height": [0,10]}], "radius": 0.5, "side": [3,0,1]}"#,
+        r#"{"op": "fillet", "objects": [{"type": "sphere", "center": [0,0,0], "radius": 1}, {"type": "plane", "normal": [0,0,1], "d": -5}], "radius": 0.5, "sector": 1}"#,
+        r#"{"op": "chamfer", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "normal": [1,0,0], "d": 0}], "legs": [1, 2], "sector": 3, "range": [0, 1]}"#,
+    ];
+    for case in cases {
+        let mut read = geocert::io::read_cases(case);
+        let r = serde_json::to_value(geocert::io::solve_case(read.remove(0))).unwrap();
+        assert_ne!(r["status"], "error", "{r}");
+        assert!(schemas.validate(&r, index).is_ok(), "{r}");
+        if r["kind"] == "surface" {
+            let no_blend = mutated(&r, |r| drop(r.as_object_mut().unwrap().remove("blend")));
+            assert!(schemas.validate(&no_blend, index).is_err());
+        }
+    }
+    let mut read = geocert::io::read_cases(
+        r#"{"op": "fillet", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "sphere", "center": [0,0,0], "radius": 1}], "radius": 2, "sector": 3}"#,
+    );
+    let r = serde_json::to_value(geocert::io::solve_case(read.remove(0))).unwrap();
+    assert_eq!(r["error"]["kind"], "degenerate_blend", "{r}");
+    assert!(schemas.validate(&r, index).is_ok(), "{r}");
+}

@@ -45,6 +45,16 @@ pub fn bisect<I: IntervalLike>(x: &[I]) -> Option<(IBox<I>, IBox<I>)> {
     Some((left, right))
 }
 
+/// The mirror image `{2c − p : p ∈ x}` of `x` through the point `c` (interval
+/// arithmetic in the type of `x`: the result contains the exact mirror image, and any box
+/// will do where it is used — it only widens a region to be proven).
+pub fn reflect<I: IntervalLike>(x: &[I], c: &[I]) -> IBox<I> {
+    x.iter()
+        .zip(c)
+        .map(|(v, m)| m.clone() * &m.lift(2.0) - v)
+        .collect()
+}
+
 /// `x` grown on every side by `rel·width + abs` (computed in the interval arithmetic of
 /// `x`, so the result contains `x`).
 pub fn inflate<I: IntervalLike>(x: &[I], rel: f64, abs: f64) -> IBox<I> {

@@ -43,33 +43,68 @@ pub fn decide_cluster<S: System, I: CertInterval>(
 ) -> Option<ClusterVerdict<I>> {
     let m0 = boxes::midpoint_f64(hull);
     let (v0, u0, _) = null_vectors(&sys.jacobian(&m0))?;
-    let near = boxes::inflate(hull, 1.0, 0.0);
+    // the double root may lie a width away, or (a side of the hull narrowed to a few
+    // ulps) a few ulps of this precision away
+    let bits = hull.first()?.precision_bits();
+    let near = boxes::inflate_scaled(hull, 1.0, (-(f64::from(bits) - 8.0)).exp2());
     let dr = double_root(sys, &boxes::midpoint(hull), &v0, &u0, 1.0)
         .filter(|d| boxes::is_subset(&d.x, &near));
+    // Near a double root the two roots lie about symmetrically about it, and subdivision
+    // may have left a cluster around one of them only (its partner stuck in a second
+    // cluster, or proven): the target is made symmetric about the double root, so that a
+    // count region covering it holds both and `two_roots` can prove both — else each
+    // cluster's singular box held one root and the two met at the double root, which
+    // proves nothing (issue 14; CERTIFICATION.md "Tangency and near-tangency").
     let (target, m) = match &dr {
-        Some(d) => (boxes::hull(hull, &d.x), boxes::midpoint_f64(&d.x)),
+        Some(d) => {
+            let c = boxes::midpoint(&d.x);
+            let both = boxes::hull(hull, &boxes::reflect(hull, &c));
+            (boxes::hull(&both, &d.x), boxes::midpoint_f64(&d.x))
+        }
         None => (hull.to_vec(), m0),
     };
     let (v, u, _) = null_vectors(&sys.jacobian(&m))?;
-    let local = Local::new(sys, &m, &v, &u)?;
-    let count = at_most_two_roots(local, &target)?;
-    if no_root(&count, 0.0) {
-        return Some(ClusterVerdict::NoRoot);
-    }
     // A perturbation enclosure containing 0 means the roots (if two) are closer than this
     // precision resolves: skip the Newton search, the caller escalates.
     let resolvable = dr.as_ref().is_none_or(|d| !d.e.contains_zero());
-    if resolvable {
-        if let Some(two) = two_roots(sys, &count, &target) {
-            return Some(ClusterVerdict::TwoRoots(two));
+    let mut singular = None;
+    // The target, then grown: a cluster between two close roots (around the double
+    // root, holding neither) has them outside its count region, and was called singular
+    // beside the two verified roots (issue 14). The smallest singular box is kept.
+    for grow in TARGET_GROWTH {
+        let region = boxes::inflate(&target, grow, 0.0);
+        let local = Local::new(sys, &m, &v, &u)?;
+        let Some(count) = at_most_two_roots(local, &region) else {
+            break;
+        };
+        if no_root(&count, 0.0) {
+            return Some(ClusterVerdict::NoRoot);
+        }
+        if resolvable {
+            if let Some(two) = two_roots(sys, &count, &region) {
+                return Some(ClusterVerdict::TwoRoots(two));
+            }
+        }
+        if singular.is_none() {
+            singular = dr.as_ref().and_then(|d| {
+                (count.covers(&region) && boxes::is_subset(&d.x, &region)).then(|| {
+                    ClusterVerdict::Singular {
+                        enclosure: region.clone(),
+                        double_root: d.clone(),
+                    }
+                })
+            });
+        }
+        if !resolvable {
+            break;
         }
     }
-    let d = dr?;
-    (count.covers(&target) && boxes::is_subset(&d.x, &target)).then_some(ClusterVerdict::Singular {
-        enclosure: target,
-        double_root: d,
-    })
+    singular
 }
+
+/// How far [`decide_cluster`] grows its target (each side by this many widths) when the
+/// count proves at most two roots but Newton finds them outside the count region.
+const TARGET_GROWTH: [f64; 3] = [0.0, 1.0, 4.0];
 
 /// Two verified roots inside the count region, found by Newton from points along the
 /// null direction on both sides of the centre (each candidate proven by Krawczyk with

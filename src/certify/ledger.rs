@@ -19,6 +19,9 @@ use super::{Options, Root, Solutions, UndecidedBox};
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::num::MpfrInterval;
 
+/// Why two verified boxes that meet are reported undecided.
+pub(super) const CONFLICT: &str = "two proven roots could not be told apart or identified";
+
 /// What one call of [`super::solve`] has proven so far (module doc).
 #[derive(Debug)]
 pub struct Ledger {
@@ -30,6 +33,9 @@ pub struct Ledger {
     used: usize,
     deadline: Option<std::time::Instant>,
     found: Vec<Found>,
+    /// Pairs of verified enclosures that meet without either proof identifying the
+    /// other's root ([`Ledger::take_conflicts`]).
+    conflicts: Vec<[Vec<MpfrInterval>; 2]>,
     undecided: Vec<UndecidedBox>,
     excluded_volume: f64,
     bits: u32,
@@ -83,6 +89,7 @@ impl Ledger {
             used: 0,
             deadline: opts.deadline,
             found: Vec::new(),
+            conflicts: Vec::new(),
             undecided: Vec::new(),
             excluded_volume: 0.0,
             bits: 53,
@@ -159,17 +166,23 @@ impl Ledger {
                 return;
             }
             if boxes::meets(&e.enclosure, &f.enclosure) {
-                // neither proof covers the other's root: one root or two, undecided
+                // neither proof covers the other's root: one root or two, for the
+                // caller to decide ([`Ledger::take_conflicts`])
                 let e = self.found.remove(i);
-                let hull = boxes::hull(&e.enclosure, &f.enclosure);
-                self.undecided(
-                    &hull,
-                    "two proven roots could not be told apart or identified",
-                );
+                self.conflicts.push([e.enclosure, f.enclosure]);
                 return;
             }
         }
         self.found.push(f);
+    }
+
+    /// The pairs of verified enclosures recorded so far that meet without either proof
+    /// identifying the other's root (a root proven twice, from different boxes or at
+    /// different precisions, or two roots closer than both enclosures): each holds a
+    /// root, and the caller either proves one root unique in a box holding both (then
+    /// it is one root, in their intersection) or records their hull undecided.
+    pub(super) fn take_conflicts(&mut self) -> Vec<[Vec<MpfrInterval>; 2]> {
+        std::mem::take(&mut self.conflicts)
     }
 
     /// Record a `verified_singular` box.
@@ -309,6 +322,9 @@ impl Ledger {
     /// those straddling its boundary, and the certificate (`complete` exactly when
     /// nothing is undecided; the status the weakest of the roots').
     pub(super) fn finish(mut self, dom: &[MpfrInterval]) -> Certified<Solutions> {
+        for [a, b] in self.take_conflicts() {
+            self.undecided(&boxes::hull(&a, &b), CONFLICT);
+        }
         self.reconcile();
         let mut roots = Vec::new();
         let mut boundary_roots = Vec::new();

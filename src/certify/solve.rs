@@ -11,7 +11,7 @@
 use super::boxes::{self, IBox};
 use super::cluster::{decide_cluster, ClusterVerdict};
 use super::deflate::DoubleRoot;
-use super::krawczyk::VerifiedRoot;
+use super::krawczyk::{krawczyk, Krawczyk, VerifiedRoot};
 use super::ledger::Ledger;
 use super::level::{box_at, box_to_mpfr, CertInterval};
 use super::subdivide::{clusters, subdivide};
@@ -44,6 +44,7 @@ pub fn solve<S: System>(
     let mut ledger = Ledger::new(opts);
     decide(sys, vec![dom.clone()], 0, &mut ledger);
     separate(sys, &mut ledger);
+    identify(sys, &mut ledger);
     Ok(ledger.finish(&dom))
 }
 
@@ -88,6 +89,13 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
                     // keep the lowest precision's; a higher one may still split it
                     singular.get_or_insert((enclosure, d, bits));
                 }
+                // Nothing proven at this precision, not even a singular box: the
+                // cluster is most often a simple root that subdivision at the next
+                // precision decides at once, where the cluster tests at every higher
+                // precision cost seconds to fail (issue 14: a circle 1e-9 from a
+                // torus tube spent 3 s in them); subdivide at the next level, which
+                // tries its own clusters again.
+                None if singular.is_none() => break,
                 None => {}
             }
             if decided {
@@ -144,6 +152,69 @@ fn separate<S: System>(sys: &S, ledger: &mut Ledger) {
         if let Some((e, d, bits)) = singular {
             ledger.replace_singular::<MpfrInterval>(i, Err((e, d)), bits);
         }
+    }
+}
+
+/// Verified boxes that meet without either proof identifying the other's root
+/// ([`Ledger::take_conflicts`]; issue 14: a root of a near tangency proven from two
+/// clusters at once, its enclosures offset by less than their widths): Krawczyk on the
+/// hull of both, grown by a sixteenth, at rising precision. `Unique` there proves that
+/// both boxes hold the same root (each holds a root, and the grown hull holds only one),
+/// which then lies in both enclosures and in the Krawczyk image: one root, recorded
+/// once. Otherwise the hull is undecided. A merged root may meet another one in turn,
+/// hence the passes (bounded; what is left is undecided by [`Ledger::finish`]).
+fn identify<S: System>(sys: &S, ledger: &mut Ledger) {
+    for _ in 0..4 {
+        let pairs = ledger.take_conflicts();
+        if pairs.is_empty() {
+            return;
+        }
+        for [a, b] in pairs {
+            let hull = boxes::hull(&a, &b);
+            let levels = ledger.levels.clone();
+            let proven = levels.into_iter().find_map(|bits| {
+                let v = if bits == 53 {
+                    one_root_in::<S, Interval>(sys, &hull, bits)
+                } else {
+                    one_root_in::<S, MpfrInterval>(sys, &hull, bits)
+                };
+                v.map(|v| (v, bits))
+            });
+            match proven {
+                Some((v, bits)) => {
+                    let both = boxes::intersection(&v.enclosure, &a)
+                        .and_then(|e| boxes::intersection(&e, &b))
+                        .unwrap_or(v.enclosure);
+                    ledger.root(
+                        VerifiedRoot {
+                            region: v.region,
+                            enclosure: both,
+                        },
+                        bits,
+                    );
+                }
+                None => ledger.undecided(&hull, super::ledger::CONFLICT),
+            }
+        }
+    }
+}
+
+/// Krawczyk on `hull` grown by a sixteenth (plus a few ulps) at `bits`: a root unique
+/// there (region the grown box, enclosure the Krawczyk image), as MPFR boxes.
+fn one_root_in<S: System, I: CertInterval>(
+    sys: &S,
+    hull: &[MpfrInterval],
+    bits: u32,
+) -> Option<VerifiedRoot<MpfrInterval>> {
+    let h: IBox<I> = box_at(hull, bits);
+    let ulps = (-(f64::from(bits) - 4.0)).exp2();
+    let grown = boxes::inflate_scaled(&h, 1.0 / 16.0, ulps);
+    match krawczyk(sys, &grown) {
+        Krawczyk::Unique(k) => Some(VerifiedRoot {
+            region: box_to_mpfr(&grown),
+            enclosure: box_to_mpfr(&k),
+        }),
+        _ => None,
     }
 }
 

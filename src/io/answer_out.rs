@@ -9,11 +9,14 @@
 use rug::Rational;
 
 use super::result::{
-    CaseResult, CurveEndOut, CurveOut, CurveVertexOut, ExactLineOut, ExactOut, LineOut,
-    ParamLineOut, PointOut, SegmentOut, SingularPointOut,
+    BlendOut, CaseResult, ComponentOut, CurveEndOut, CurveOut, CurveVertexOut, ExactLineOut,
+    ExactOut, GridOut, LineOut, ParamLineOut, PointOut, SegmentOut, SingularPointOut,
 };
 use crate::certificate::Certified;
-use crate::ops::{Answer, CurveAnswer, CurveEnd, LineAnswer, Point, SingularPointAnswer};
+use crate::ops::{
+    Answer, BlendAnswer, BlendComponent, BlendKind, CurveAnswer, CurveEnd, LineAnswer, Point,
+    SingularPointAnswer,
+};
 
 fn texts(v: &[Rational]) -> Vec<String> {
     v.iter().map(Rational::to_string).collect()
@@ -109,6 +112,35 @@ fn singular_point(p: &SingularPointAnswer) -> SingularPointOut {
     }
 }
 
+fn component(c: &BlendComponent) -> ComponentOut {
+    ComponentOut {
+        contacts: [0, 1].map(|k| c.contacts[k].iter().map(point).collect()),
+        grid: GridOut {
+            t: c.grid.t.clone(),
+            z: c.grid.z.clone(),
+            points: c.grid.points.clone(),
+            boxes: c.grid.boxes.clone(),
+        },
+        status: c.spine.status.as_str(),
+        reason: c.spine.reason.clone(),
+    }
+}
+
+/// The record field of a blend (`fillet`, `chamfer`).
+fn blend(b: &BlendAnswer) -> BlendOut {
+    let (kind, radius, legs) = match b.kind {
+        BlendKind::Fillet { radius } => ("fillet", Some(radius), None),
+        BlendKind::Chamfer { legs } => ("chamfer", None, Some(legs)),
+    };
+    BlendOut {
+        kind,
+        radius,
+        legs,
+        sector: b.sector,
+        components: b.components.iter().map(component).collect(),
+    }
+}
+
 /// The result record of an answer.
 pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
     let mut r = CaseResult::certified(id, c.value.kind(), c);
@@ -132,6 +164,11 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
             if !c.points.is_empty() {
                 r.points = Some(c.points.iter().map(point).collect());
             }
+        }
+        Answer::Blend(b) if b.components.is_empty() => r.points = Some(vec![]),
+        Answer::Blend(b) => {
+            r.curves = Some(b.components.iter().map(|k| curve(&k.spine, &[])).collect());
+            r.blend = Some(blend(b));
         }
         Answer::Plane | Answer::Coincident | Answer::CommonComponent => {}
     }

@@ -76,7 +76,26 @@ pub struct Case {
     pub nearest: bool,
     pub shell: Option<ObjectSpec>,
     pub claim: Option<serde_json::Value>,
+    /// `fillet`, `chamfer`: what the blend asks besides its two objects.
+    pub blend: BlendFields,
     pub options: Options,
+}
+
+/// The fields of `fillet` and `chamfer` cases (docs/FORMAT.md "Blends").
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BlendFields {
+    /// `fillet`: the ball radius ρ.
+    pub radius: Option<Double>,
+    /// `chamfer`: the legs on the first and the second object.
+    pub legs: Option<[Double; 2]>,
+    /// The sector of OPERATIONS.md §11.1 (1–4).
+    pub sector: Option<u8>,
+    /// A point of the sector (the caller's side), instead of `sector`.
+    pub side: Option<[Double; 3]>,
+    /// The arc-length range of the spine of two planes.
+    pub range: Option<[Double; 2]>,
+    /// `[stations along the spine, points across]`.
+    pub grid: Option<[usize; 2]>,
 }
 
 /// The case as written; objects stay JSON values until [`parse_object`] reads them
@@ -104,6 +123,18 @@ struct RawCase {
     pub shell: Option<serde_json::Value>,
     /// The answer of another program, for `geocert verify`.
     pub claim: Option<serde_json::Value>,
+    /// `fillet`: the ball radius ρ.
+    pub radius: Option<Double>,
+    /// `chamfer`: the legs on the first and the second object.
+    pub legs: Option<[Double; 2]>,
+    /// `fillet`, `chamfer`: the sector of OPERATIONS.md §11.1 (1–4).
+    pub sector: Option<u8>,
+    /// `fillet`, `chamfer`: a point of the sector, instead of `sector`.
+    pub side: Option<[Double; 3]>,
+    /// `fillet`, `chamfer`: the arc-length range of the spine of two planes.
+    pub range: Option<[Double; 2]>,
+    /// `fillet`, `chamfer`: `[stations along the spine, points across]`.
+    pub grid: Option<[usize; 2]>,
     #[serde(default)]
     pub options: Options,
 }
@@ -173,6 +204,14 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
             nearest: raw.nearest,
             shell,
             claim: raw.claim,
+            blend: BlendFields {
+                radius: raw.radius,
+                legs: raw.legs,
+                sector: raw.sector,
+                side: raw.side,
+                range: raw.range,
+                grid: raw.grid,
+            },
             options: raw.options,
         })
     });

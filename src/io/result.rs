@@ -146,6 +146,44 @@ pub struct SingularPointOut {
     pub branches: usize,
 }
 
+/// The blend of a `fillet` / `chamfer` record (docs/FORMAT.md "Blends").
+/// The sampled blend surface of one component.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct GridOut {
+    #[serde(serialize_with = "doubles")]
+    pub t: Vec<f64>,
+    #[serde(serialize_with = "doubles")]
+    pub z: Vec<f64>,
+    /// `points[i][j] = f(t[i], z[j])`.
+    #[serde(serialize_with = "doubles")]
+    pub points: Vec<Vec<[f64; 3]>>,
+    #[serde(rename = "box", serialize_with = "doubles")]
+    pub boxes: Vec<Vec<[Bounds; 3]>>,
+}
+
+/// One component: the contacts on each face at the stations of `curves[i]`, and the grid.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ComponentOut {
+    pub contacts: [Vec<PointOut>; 2],
+    pub grid: GridOut,
+    pub status: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub reason: Option<String>,
+}
+
+/// `blend` of a record of kind `surface`.
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct BlendOut {
+    #[serde(rename = "type")]
+    pub kind: &'static str,
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
+    pub radius: Option<f64>,
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
+    pub legs: Option<[f64; 2]>,
+    pub sector: u8,
+    pub components: Vec<ComponentOut>,
+}
+
 /// `error` of a result.
 #[derive(Debug, Clone, PartialEq, Serialize)]
 pub struct ErrorOut {
@@ -195,6 +233,9 @@ pub struct CaseResult {
     /// Kind `curves` of a plane ∩ quadric: the exact conic (docs/FORMAT.md "Sections").
     #[serde(skip_serializing_if = "Option::is_none")]
     pub conic: Option<super::section_out::ConicOut>,
+    /// Kind `surface` (`fillet`, `chamfer`): the blend (docs/FORMAT.md "Blends").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub blend: Option<BlendOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorOut>,
     /// `verify`: the verdict on each claimed item.
@@ -241,6 +282,7 @@ impl CaseResult {
             curves: None,
             singular_points: None,
             conic: None,
+            blend: None,
             claims: None,
             missed: None,
             error: Some(ErrorOut {
@@ -270,6 +312,7 @@ impl CaseResult {
             curves: None,
             singular_points: None,
             conic: None,
+            blend: None,
             error: None,
             claims: None,
             missed: None,

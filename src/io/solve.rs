@@ -10,7 +10,8 @@ use super::case::{Case, Op, ReadCase};
 use super::result::CaseResult;
 use crate::certificate::Certified;
 use crate::error::GeomError;
-use crate::ops::{self, Answer, Options, ProjectOptions};
+use crate::ops::fillet::SectorChoice;
+use crate::ops::{self, Answer, BlendSpec, Options, ProjectOptions};
 
 /// Solve one case read from the input. Errors (unreadable cases, invalid objects,
 /// unsupported operations) become error records naming the field.
@@ -131,9 +132,63 @@ pub fn answer(case: &Case) -> Result<Certified<Answer>, GeomError> {
             let shape_at = |i: usize| shape(&case.objects[i], &format!("objects[{i}]"));
             ops::section(&shape_at(0)?, &shape_at(1)?, &options(case)?)
         }
+        Op::Fillet | Op::Chamfer => blend(case),
         other => Err(GeomError::Unsupported {
             field: "op".into(),
             reason: format!("`{}` is not implemented in this build", other.as_str()),
         }),
+    }
+}
+
+/// `fillet` and `chamfer`: two objects and the blend fields (docs/FORMAT.md "Blends").
+fn blend(case: &Case) -> Result<Certified<Answer>, GeomError> {
+    if case.objects.len() != 2 {
+        return Err(GeomError::CountMismatch {
+            field: "objects".into(),
+            expected: "2 objects (the two faces)".into(),
+            found: case.objects.len().to_string(),
+        });
+    }
+    let shape_at = |i: usize| shape(&case.objects[i], &format!("objects[{i}]"));
+    let b = &case.blend;
+    let sector = match (b.sector, b.side) {
+        (Some(_), Some(_)) => {
+            return Err(GeomError::Format {
+                field: "side".into(),
+                message: "give either `sector` or `side`, not both".into(),
+            })
+        }
+        (Some(k), None) => SectorChoice::Number(k),
+        (None, Some(x)) => SectorChoice::Side(x.map(|d| d.0)),
+        (None, None) => return Err(missing("sector", case.op)),
+    };
+    let mut spec = BlendSpec {
+        sector,
+        range: b.range.map(|r| r.map(|d| d.0)),
+        ..BlendSpec::default()
+    };
+    if let Some(g) = b.grid {
+        spec.grid = g;
+    }
+    let (a, s) = (shape_at(0)?, shape_at(1)?);
+    let opts = options(case)?;
+    if case.op == Op::Fillet {
+        if b.legs.is_some() {
+            return Err(GeomError::Format {
+                field: "legs".into(),
+                message: "`legs` belongs to `chamfer`".into(),
+            });
+        }
+        let radius = b.radius.ok_or_else(|| missing("radius", case.op))?;
+        ops::fillet(&a, &s, radius.0, &spec, &opts)
+    } else {
+        if b.radius.is_some() {
+            return Err(GeomError::Format {
+                field: "radius".into(),
+                message: "`radius` belongs to `fillet`".into(),
+            });
+        }
+        let legs = b.legs.ok_or_else(|| missing("legs", case.op))?;
+        ops::chamfer(&a, &s, legs.map(|d| d.0), &spec, &opts)
     }
 }

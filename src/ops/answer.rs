@@ -163,6 +163,46 @@ pub struct CurvesAnswer {
     pub conic: Option<crate::ops::rational::Section>,
 }
 
+/// Which blend a [`BlendAnswer`] describes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum BlendKind {
+    /// A rolling-ball fillet of this radius (OPERATIONS.md §11.2).
+    Fillet { radius: f64 },
+    /// A chamfer with these legs on the first and the second face (§11.5).
+    Chamfer { legs: [f64; 2] },
+}
+
+/// The blend surface sampled on a grid `f(t_i, z_j)` (rows along `z`, one per `t_i`).
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct BlendGrid {
+    pub t: Vec<f64>,
+    pub z: Vec<f64>,
+    /// `points[i][j] = f(t[i], z[j])` (float estimates).
+    pub points: Vec<Vec<[f64; 3]>>,
+    /// Certified enclosures of `points`, shaped like it.
+    pub boxes: Vec<Vec<[Bounds; 3]>>,
+}
+
+/// One component of a blend: its spine (the ball-centre curve of a fillet, the edge
+/// line of a chamfer), whose vertices carry the contact parameters on both faces; the
+/// contact points on each face at the same stations; and the surface grid.
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlendComponent {
+    pub spine: CurveAnswer,
+    /// `contacts[k][i]`: the contact on face `k` at station `i` (params on face `k` only).
+    pub contacts: [Vec<Point>; 2],
+    pub grid: BlendGrid,
+}
+
+/// The answer of `fillet` and `chamfer` (OPERATIONS.md §11).
+#[derive(Debug, Clone, PartialEq)]
+pub struct BlendAnswer {
+    pub kind: BlendKind,
+    /// The sector of §11.1 (1–4) the blend lies in.
+    pub sector: u8,
+    pub components: Vec<BlendComponent>,
+}
+
 /// The answer of an operation.
 #[derive(Debug, Clone, PartialEq)]
 // One answer per operation call: its size does not matter, boxing would only add noise.
@@ -186,6 +226,8 @@ pub enum Answer {
     Side(Side, Option<Point>),
     /// Intersection curves with their singular and isolated points (surface ∩ surface).
     Curves(CurvesAnswer),
+    /// A fillet or chamfer surface (kind `surface`).
+    Blend(BlendAnswer),
 }
 
 impl Answer {
@@ -202,6 +244,8 @@ impl Answer {
             Answer::CommonComponent => "common_component",
             Answer::Side(side, _) => side.as_str(),
             Answer::Curves(_) => "curves",
+            Answer::Blend(b) if b.components.is_empty() => "empty",
+            Answer::Blend(_) => "surface",
         }
     }
 

@@ -24,6 +24,7 @@ pub mod beyond_range;
 pub mod certified;
 pub mod classify;
 pub mod closed_surface;
+pub mod fillet;
 pub mod float;
 mod front;
 pub mod intersect;
@@ -40,10 +41,11 @@ pub mod surface_surface;
 pub mod verify;
 
 pub use answer::{
-    Answer, CurveAnswer, CurveEnd, CurveVertex, CurvesAnswer, ExactPoint, LineAnswer, ParamLine,
-    Point, SegmentAnswer, SingularPointAnswer,
+    Answer, BlendAnswer, BlendComponent, BlendGrid, BlendKind, CurveAnswer, CurveEnd, CurveVertex,
+    CurvesAnswer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer, SingularPointAnswer,
 };
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
+pub use fillet::{chamfer, fillet, BlendSpec};
 pub use front::{classify, intersect, project};
 pub use options::{Options, ProjectOptions};
 pub use polyhedron::Polyhedron;

@@ -309,19 +309,7 @@ impl LineSphere {
 /// `GEOCERT_KNOWN_DEFECTS=1`; by default it is left out, by name, so the suite stays
 /// green until the fix lands. Remove a name when its fix is merged.
 pub const KNOWN_DEFECTS: &[&str] = &[
-    // A near tangency (gap ≈ 1e-10) where the singular box of one root's neighbourhood
-    // and the verified box of the other root meet without either holding the other
-    // (the root lies on the singular box's edge): the cluster tests on their hull prove
-    // nothing, so the hull is reported undecided and the answer is not complete
-    // (sound; formerly three overlapping boxes, or a verified and a singular box for
-    // the same pair). Unit circles at the origin and 2 − 1e-10 away at angle 5.4618…;
-    // the line (t, √(1 − z²) − 1e-10, z), z = 0.1650056…, against the unit sphere.
-    "near_tangency_partial_overlap",
-    // A near tangency (gap 1e-10) whose two simple roots come back as two disjoint
-    // singular boxes, one per root (sound and counted, but not "two verified"):
-    // circles r = 1.25 at (−0.11303503053223087, 0.3864919933125328) and 2.5 − 1e-10
-    // away at angle 5.740462108155714.
-    "near_tangency_mixed_kinds",
+    // (none open: the near-tangency defects of issue 14 were fixed in src/certify/cluster.rs)
 ];
 
 /// True if the check named `name` is to run: it is not a known defect, or

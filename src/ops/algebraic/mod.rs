@@ -20,11 +20,14 @@ mod bivariate;
 mod conic;
 mod conic_conic;
 mod conic_plane;
+pub(crate) mod curve_on_surface;
 mod foot2;
 mod line;
 mod line_surface;
+mod on_surface;
 pub(crate) mod pairs;
 mod params;
+pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};
 pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};

@@ -32,10 +32,10 @@ use crate::surface::frame::Frame;
 use crate::surface::AnySurface;
 
 /// An exact line `o + t·d` with the parameter range it is restricted to.
-struct ExactLine<const D: usize> {
-    o: [Rational; D],
-    d: [Rational; D],
-    range: Option<[Rational; 2]>,
+pub(super) struct ExactLine<const D: usize> {
+    pub(super) o: [Rational; D],
+    pub(super) d: [Rational; D],
+    pub(super) range: Option<[Rational; 2]>,
 }
 
 fn unit() -> [Rational; 2] {
@@ -48,7 +48,7 @@ fn arr<const D: usize>(v: impl Iterator<Item = Rational>) -> [Rational; D] {
 }
 
 /// A 3D line or segment, exactly.
-fn line3(shape: &Linear) -> Option<ExactLine<3>> {
+pub(super) fn line3(shape: &Linear) -> Option<ExactLine<3>> {
     match shape.exact() {
         LinearObject::Line(l) => Some(ExactLine {
             o: arr(l.origin().iter().cloned()),
@@ -85,7 +85,7 @@ fn line2(shape: &Shape) -> Option<ExactLine<2>> {
 }
 
 /// The exact implicit form of a closed surface, with what inverts its parametrisation.
-enum Closed {
+pub(super) enum Closed {
     /// Sphere or ellipsoid: local coordinates divided by the radii lie on the unit
     /// sphere, `u = atan2(y, x)`, `v = atan2(z, ρ)`.
     Quadric(QuadricForm<3>, Frame, [f64; 3]),
@@ -93,7 +93,7 @@ enum Closed {
     Torus(TorusData, Frame, f64),
 }
 
-fn closed(surface: &AnySurface) -> Option<Closed> {
+pub(super) fn closed(surface: &AnySurface) -> Option<Closed> {
     if !is_closed_shell(surface) {
         return None;
     }
@@ -148,7 +148,7 @@ fn param(b: Interval) -> (f64, [f64; 2]) {
     (m, [b.lo(), b.hi()])
 }
 
-fn point_box<const D: usize>(h: &LineHit<D>) -> [Interval; D] {
+pub(super) fn point_box<const D: usize>(h: &LineHit<D>) -> [Interval; D] {
     std::array::from_fn(|i| Interval::from_bounds(h.point[i].lo, h.point[i].hi))
 }
 
@@ -165,7 +165,7 @@ pub(crate) fn sphere_params(
 }
 
 /// `(u, v)` of a point of a closed surface (module doc).
-fn surface_params(shape: &Closed, p: &[Interval; 3]) -> Vec<(f64, [f64; 2])> {
+pub(super) fn surface_params(shape: &Closed, p: &[Interval; 3]) -> Vec<(f64, [f64; 2])> {
     let (frame, scale, major) = match shape {
         Closed::Quadric(_, f, r) => (f, *r, 0.0),
         Closed::Torus(_, f, major) => (f, [1.0; 3], *major),

@@ -5,6 +5,7 @@
 use super::intersect_curved;
 use crate::certificate::Certified;
 use crate::error::GeomError;
+use crate::ops::algebraic::curve_on_surface as on_surface;
 use crate::ops::algebraic::pairs;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
@@ -51,8 +52,15 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
 /// The exact algebraic pairs ([`pairs`]), in either order.
 fn algebraic(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
     match (a, b) {
-        (Shape::Linear(l), Shape::Surface(s)) => pairs::line_surface(l, s, true).map(Ok),
-        (Shape::Surface(s), Shape::Linear(l)) => pairs::line_surface(l, s, false).map(Ok),
+        (Shape::Linear(l), Shape::Surface(s)) => pairs::line_surface(l, s, true)
+            .or_else(|| on_surface::line_on_surface(l, s, true))
+            .map(Ok),
+        (Shape::Surface(s), Shape::Linear(l)) => pairs::line_surface(l, s, false)
+            .or_else(|| on_surface::line_on_surface(l, s, false))
+            .map(Ok),
+        (Shape::Curve(c), Shape::Surface(s)) | (Shape::Surface(s), Shape::Curve(c)) => {
+            on_surface::curve_on_surface(c, s).map(Ok)
+        }
         (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false).map(Ok),
         (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true).map(Ok),
         _ => pairs::plane_pair(a, b),

@@ -243,6 +243,9 @@ pub(crate) fn three(
             "three-object intersections take three surfaces (or three planes)",
         ));
     };
+    if let Some(exact) = crate::ops::algebraic::three_spheres::intersect_three_spheres([r, s, q]) {
+        return Ok(exact);
+    }
     let (nr, ns, nq) = (surface_nodes(r)?, surface_nodes(s)?, surface_nodes(q)?);
     let c = intersect_three_surfaces((r, s, q), [&nr, &ns, &nq], &opts.precision, &opts.certify())?;
     Ok(points::points(c, &[2, 2, 2], None))
