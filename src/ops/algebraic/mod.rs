@@ -27,6 +27,7 @@ mod line_surface;
 mod on_surface;
 pub(crate) mod pairs;
 mod params;
+pub(crate) mod section_answer;
 pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};

@@ -85,7 +85,7 @@ fn line2(shape: &Shape) -> Option<ExactLine<2>> {
 }
 
 /// The exact implicit form of a closed surface, with what inverts its parametrisation.
-pub(super) enum Closed {
+pub(crate) enum Closed {
     /// Sphere or ellipsoid: local coordinates divided by the radii lie on the unit
     /// sphere, `u = atan2(y, x)`, `v = atan2(z, ρ)`.
     Quadric(QuadricForm<3>, Frame, [f64; 3]),

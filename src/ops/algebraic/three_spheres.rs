@@ -28,6 +28,7 @@ use super::line::LineCut;
 use super::on_surface::cross;
 use super::pairs::{closed, not_correctly_rounded, point_box, surface_params, Closed};
 use super::params::{line_hit_params, ClosedFrame};
+use super::section_answer::{section_point, touching_point, ParamSource};
 use super::{intersect_line_quadric_exact, QuadricForm};
 use crate::certificate::{Arithmetic, Certified};
 use crate::ops::answer::{Answer, ExactPoint, Point};
@@ -74,9 +75,21 @@ fn exact(value: Answer) -> Certified<Answer> {
     Certified::exact(value, Arithmetic::Rational, 53)
 }
 
-/// The section of `f` by `n·x = h`.
-fn section(f: &QuadricForm<3>, n: V3, h: Rational) -> Certified<Answer> {
-    conic_answer(section_plane_quadric(&ExactPlane { normal: n, d: -h }, f))
+/// The section of `f` by `n·x = h`; a touching point (the spheres' centres collinear)
+/// as the exact point of all three ([`super::section_answer::touching_point`]).
+fn section(s: [&AnySurface; 3], f: &QuadricForm<3>, n: V3, h: Rational) -> Certified<Answer> {
+    let cut = section_plane_quadric(&ExactPlane { normal: n, d: -h }, f);
+    match section_point(&cut) {
+        Some(p) => {
+            let bits = conic_answer(cut).bits;
+            let shapes: Vec<ParamSource> = s
+                .iter()
+                .map(|x| closed(x).map_or(ParamSource::None, ParamSource::Closed))
+                .collect();
+            touching_point(&p, &shapes, bits)
+        }
+        None => conic_answer(cut),
+    }
 }
 
 /// Three whole spheres or ellipsoids with proportional quadratic parts, exactly
@@ -95,7 +108,7 @@ pub(crate) fn intersect_three_spheres(s: [&AnySurface; 3]) -> Option<Certified<A
         (Radical::Disjoint, _) | (_, Radical::Disjoint) => return Some(exact(Answer::Empty)),
         (Radical::Same, Radical::Same) => return Some(exact(Answer::Coincident)),
         (Radical::Same, Radical::Plane(n, h)) | (Radical::Plane(n, h), Radical::Same) => {
-            return Some(section(forms[0], n, h))
+            return Some(section(s, forms[0], n, h))
         }
         (Radical::Plane(n2, h2), Radical::Plane(n3, h3)) => (n2, h2, n3, h3),
     };
@@ -105,7 +118,7 @@ pub(crate) fn intersect_three_spheres(s: [&AnySurface; 3]) -> Option<Certified<A
         let k = (0..3).find(|&k| n3[k] != 0)?;
         let ratio = Rational::from(&n2[k] / &n3[k]);
         return Some(if Rational::from(&ratio * &h3) == h2 {
-            section(forms[0], n2, h2)
+            section(s, forms[0], n2, h2)
         } else {
             exact(Answer::Empty)
         });
@@ -118,7 +131,7 @@ pub(crate) fn intersect_three_spheres(s: [&AnySurface; 3]) -> Option<Certified<A
     Some(points(&shapes, &o, &m, cut))
 }
 
-fn frame_of(c: &Closed) -> ClosedFrame<'_> {
+pub(super) fn frame_of(c: &Closed) -> ClosedFrame<'_> {
     match c {
         Closed::Quadric(_, f, r) => ClosedFrame {
             frame: f,

@@ -60,12 +60,7 @@ pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Ans
     if is_plane_shape(a) && is_plane_shape(b) {
         return plane_curves(a, b, opts);
     }
-    let tracer = Box::new(|| super::intersect_surfaces::pair(a, b, opts));
-    if let Some(r) = crate::ops::section::intersect_plane_quadric(a, b, tracer) {
-        return r;
-    }
-    let tracer = Box::new(|| super::intersect_surfaces::pair(a, b, opts));
-    if let Some(r) = crate::ops::section::intersect_proportional_quadrics(a, b, tracer) {
+    if let Some(r) = super::sections::pair(a, b, opts) {
         return r;
     }
     if let Some(r) = super::intersect_surfaces::pair(a, b, opts) {

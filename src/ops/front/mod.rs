@@ -15,6 +15,7 @@ mod intersect_surfaces;
 mod points;
 mod project;
 mod project_curved;
+mod sections;
 mod seeds;
 
 use crate::certificate::Certified;

@@ -1,9 +1,7 @@
 //! Plane ∩ quadric at the front door's `intersect` (OPERATIONS.md §13.2): for a plane
 //! of the linear kernel and a whole sphere or ellipsoid (whose exact conic is the
-//! whole intersection, no domain trims it) the section is decided exactly first. An
-//! empty section is the answer (`exact`, complete); otherwise the numeric tracer
-//! ([`crate::ops::surface_surface`]) still gives the polylines with their surface
-//! parameters, and the exact conic is attached to its curves answer. Trimmed quadrics
+//! whole intersection, no domain trims it) the section is decided exactly first; the
+//! front door (`ops::front::sections`) turns it into the answer. Trimmed quadrics
 //! (cylinders, hyperboloids and paraboloids with a height or range) stay with the
 //! tracer, whose answers respect the domain.
 //!
@@ -15,25 +13,24 @@
 //! `coincident`, and a circle comes with its exact centre and radius.
 
 use super::{
-    conic_answer, exact_plane, is_whole, quadric_of_surface, section_plane_quadric, ConicType,
-    ExactPlane,
+    exact_plane, is_whole, quadric_of_surface, section_plane_quadric, ExactPlane, Section,
 };
-use crate::certificate::Certified;
-use crate::error::GeomError;
+use crate::certificate::{Arithmetic, Certified};
 use crate::ops::answer::Answer;
 use crate::ops::rational::QuadricForm;
 use crate::ops::shape::Shape;
 use rug::Rational;
 
-type Tracer<'a> = dyn FnOnce() -> Option<Result<Certified<Answer>, GeomError>> + 'a;
+/// What the exact route decided: the section that is the whole intersection, or the
+/// answer itself (equal spheres: `coincident`; concentric ones: `empty`).
+pub(crate) enum ExactSection {
+    Section(Section),
+    Answer(Certified<Answer>),
+}
 
-/// `Some` answer when one shape is a plane and the other a whole sphere or ellipsoid
-/// with an exact form; `tracer` gives the numeric answer it refines.
-pub(crate) fn intersect_plane_quadric(
-    a: &Shape,
-    b: &Shape,
-    tracer: Box<Tracer<'_>>,
-) -> Option<Result<Certified<Answer>, GeomError>> {
+/// The exact section when one shape is a plane and the other a whole sphere or
+/// ellipsoid with an exact form; `None` for other pairs.
+pub(crate) fn plane_quadric_section(a: &Shape, b: &Shape) -> Option<ExactSection> {
     let (plane, surface) = match (a, b) {
         (Shape::Linear(l), Shape::Surface(s)) | (Shape::Surface(s), Shape::Linear(l))
             if l.type_name() == "plane" =>
@@ -46,16 +43,12 @@ pub(crate) fn intersect_plane_quadric(
         return None;
     }
     let form = quadric_of_surface(surface)?;
-    Some(exact_then_traced(&plane, &form, tracer))
+    Some(ExactSection::Section(section_plane_quadric(&plane, &form)))
 }
 
-/// `Some` answer when both shapes are whole quadrics with exact forms whose quadratic
-/// parts are proportional (module documentation); `tracer` as above.
-pub(crate) fn intersect_proportional_quadrics(
-    a: &Shape,
-    b: &Shape,
-    tracer: Box<Tracer<'_>>,
-) -> Option<Result<Certified<Answer>, GeomError>> {
+/// The exact section when both shapes are whole quadrics with exact forms whose
+/// quadratic parts are proportional (module documentation); `None` for other pairs.
+pub(crate) fn proportional_quadrics_section(a: &Shape, b: &Shape) -> Option<ExactSection> {
     let (Shape::Surface(s1), Shape::Surface(s2)) = (a, b) else {
         return None;
     };
@@ -63,20 +56,12 @@ pub(crate) fn intersect_proportional_quadrics(
         return None;
     }
     let (f1, f2) = (quadric_of_surface(s1)?, quadric_of_surface(s2)?);
-    let plane = radical_plane(&f1, &f2)?;
-    match plane {
-        Radical::Plane(plane) => Some(exact_then_traced(&plane, &f1, tracer)),
-        Radical::Same => Some(Ok(Certified::exact(
-            Answer::Coincident,
-            crate::certificate::Arithmetic::Rational,
-            0,
-        ))),
-        Radical::Disjoint => Some(Ok(Certified::exact(
-            Answer::Empty,
-            crate::certificate::Arithmetic::Rational,
-            0,
-        ))),
-    }
+    let exact = |a: Answer| ExactSection::Answer(Certified::exact(a, Arithmetic::Rational, 0));
+    Some(match radical_plane(&f1, &f2)? {
+        Radical::Plane(plane) => ExactSection::Section(section_plane_quadric(&plane, &f1)),
+        Radical::Same => exact(Answer::Coincident),
+        Radical::Disjoint => exact(Answer::Empty),
+    })
 }
 
 /// What `F₁ − λF₂` is when `A₁ = λA₂`.
@@ -115,35 +100,4 @@ fn radical_plane(f1: &QuadricForm<3>, f2: &QuadricForm<3>) -> Option<Radical> {
     } else {
         Radical::Plane(ExactPlane { normal, d })
     })
-}
-
-/// The exact section of `form` by `plane`; when it is not empty, the tracer's curves
-/// with the exact conic attached.
-fn exact_then_traced(
-    plane: &ExactPlane,
-    form: &QuadricForm<3>,
-    tracer: Box<Tracer<'_>>,
-) -> Result<Certified<Answer>, GeomError> {
-    let section = section_plane_quadric(plane, form);
-    let exact = conic_answer(section);
-    let Answer::Curves(curves) = &exact.value else {
-        // Empty (a plane cannot lie in a sphere or an ellipsoid).
-        return Ok(exact);
-    };
-    let conic = curves.conic.clone();
-    // The tracer's polylines when it traced curves; otherwise (nothing, an error, or
-    // points where the exact section is a curve, e.g. a circle of radius 1e-8) the
-    // exact section alone is the answer.
-    let touching = matches!(curves.conic, Some(ref s) if s.kind == ConicType::Point);
-    match tracer() {
-        // A touching point: the tracer's proven point (with its surface parameters).
-        Some(Ok(c)) if touching && matches!(&c.value, Answer::Points(p) if !p.is_empty()) => Ok(c),
-        Some(Ok(mut c)) if matches!(c.value, Answer::Curves(_)) => {
-            if let Answer::Curves(traced) = &mut c.value {
-                traced.conic = conic;
-            }
-            Ok(c)
-        }
-        _ => Ok(exact),
-    }
 }

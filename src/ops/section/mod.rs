@@ -16,7 +16,7 @@ use rug::Rational;
 
 pub use conic::{section_plane_quadric, ConicAxis, ConicLine, ConicType, Section};
 pub use form::{is_whole, quadric_of_surface};
-pub(crate) use front::{intersect_plane_quadric, intersect_proportional_quadrics};
+pub(crate) use front::{plane_quadric_section, proportional_quadrics_section, ExactSection};
 pub use plane::{plane_through_points, plane_through_points_exact, ExactPlane, PlaneFrame};
 pub use polygon::{section_plane_polyhedron, SectionLoop};
 pub use surd::{Surd, Value};
