@@ -10,7 +10,7 @@ use crate::curve::any::AnyCurve3;
 use crate::curve::lines::Line;
 use crate::curve::Curve;
 use crate::error::GeomError;
-use crate::ops::algebraic::pairs::sphere_params;
+use crate::ops::algebraic::pairs::{ray_surface, sphere_params};
 use crate::ops::answer::{Answer, Point};
 use crate::ops::certified::CertifiedPoint;
 use crate::ops::closed_surface::{is_closed_shell, sphere_feet};
@@ -65,6 +65,18 @@ fn along(
         return Err(GeomError::ZeroDirection {
             field: "direction".into(),
         });
+    }
+    if let Some(mut r) = ray_surface(p, d, s) {
+        // Decided exactly through the implicit form (poles and apexes included).
+        if let Answer::Points(points) = &mut r.value {
+            for q in points.iter_mut() {
+                q.distance = Some(distance(&q.xyz, &p));
+            }
+        }
+        if nearest && matches!(r.value, Answer::Points(_)) {
+            keep_nearest_hit(&mut r, 1);
+        }
+        return Ok(r);
     }
     let range = reach(&p, &d, &surface_box(s)).ok_or_else(|| GeomError::Unsupported {
         field: "onto".into(),
