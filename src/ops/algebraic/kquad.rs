@@ -97,18 +97,18 @@ pub(crate) fn solve(q: &KQuad, k: impl Fn(u32) -> MpfrInterval) -> Option<(Vec<K
     };
     let disc = &(&q.b * &q.b) - &(&q.a * &q.c);
     let exact = match kind {
-        Kind::Linear => ratio(&q.c, &q.b).map(|r| -r / 2u32),
-        Kind::Double => ratio(&q.b, &q.a).map(|r| -r),
-        Kind::Pair => None,
+        Kind::Linear => vec![ratio(&q.c, &q.b).map(|r| -r / 2u32)],
+        Kind::Double => vec![ratio(&q.b, &q.a).map(|r| -r)],
+        Kind::Pair => rational_pair(q, &disc),
     };
-    let singular = kind == Kind::Double && singular_at_double(q, exact.as_ref());
+    let singular = kind == Kind::Double && singular_at_double(q, exact[0].as_ref());
     let mut bits = 64;
     while bits <= CAP {
-        if let Some(roots) = attempt(q, kind, &disc, exact.as_ref(), &k(bits), bits) {
+        if let Some(roots) = attempt(q, kind, &disc, &exact, &k(bits), bits) {
             let roots = roots
                 .into_iter()
-                .map(|t| KRoot {
-                    exact: exact.clone(),
+                .map(|(t, exact)| KRoot {
+                    exact,
                     multiplicity: if kind == Kind::Double { 2 } else { 1 },
                     singular,
                     t,
@@ -121,6 +121,29 @@ pub(crate) fn solve(q: &KQuad, k: impl Fn(u32) -> MpfrInterval) -> Option<(Vec<K
     None
 }
 
+/// The two roots exactly when the coefficients do not involve `k` and the
+/// discriminant is a rational square; else unknown.
+fn rational_pair(q: &KQuad, disc: &Polynomial) -> Vec<Option<Rational>> {
+    let constant = |p: &Polynomial| p.degree().is_none_or(|d| d == 0);
+    if !(constant(&q.a) && constant(&q.b) && constant(disc)) {
+        return vec![None, None];
+    }
+    let d = disc.coeff(0);
+    let (n, m) = (d.numer(), d.denom());
+    if d.cmp0() != std::cmp::Ordering::Greater || !(n.is_perfect_square() && m.is_perfect_square())
+    {
+        return vec![None, None];
+    }
+    let s = Rational::from((
+        rug::Integer::from(n.sqrt_ref()),
+        rug::Integer::from(m.sqrt_ref()),
+    ));
+    let (a, b) = (q.a.coeff(0), q.b.coeff(0));
+    let mut r = [(-b.clone() - &s) / &a, (-b + &s) / &a];
+    r.sort();
+    r.into_iter().map(Some).collect()
+}
+
 /// The half-gradient vanishes at the double root `−B/A`: `A g₀ − B g₁ ≡ 0` (or
 /// `g₀ + t g₁ ≡ 0` at a rational `t`).
 fn singular_at_double(q: &KQuad, exact: Option<&Rational>) -> bool {
@@ -130,22 +153,27 @@ fn singular_at_double(q: &KQuad, exact: Option<&Rational>) -> bool {
     })
 }
 
-/// The kept roots at one precision, or `None` when a sign is not decided there.
+/// The kept roots at one precision (with their exact values when rational), or `None`
+/// when a sign is not decided there.
 fn attempt(
     q: &KQuad,
     kind: Kind,
     disc: &Polynomial,
-    exact: Option<&Rational>,
+    exact: &[Option<Rational>],
     k: &MpfrInterval,
     bits: u32,
-) -> Option<Vec<MpfrInterval>> {
+) -> Option<Vec<(MpfrInterval, Option<Rational>)>> {
     let (a, b, c) = (
         eval(&q.a, k, bits),
         eval(&q.b, k, bits),
         eval(&q.c, k, bits),
     );
-    let roots = if let Some(t) = exact {
-        vec![MpfrInterval::from_rational(t, bits)]
+    let roots = if exact.iter().all(Option::is_some) {
+        exact
+            .iter()
+            .flatten()
+            .map(|t| MpfrInterval::from_rational(t, bits))
+            .collect()
     } else {
         match kind {
             Kind::Linear if !b.contains_zero() => {
@@ -181,12 +209,13 @@ fn attempt(
             .filter(|&(j, _)| j != i)
             .map(|p| p.1)
             .collect();
+        let x = exact.get(i).cloned().flatten();
         let mut keep = true;
         for con in &q.constraints {
-            keep &= inside(q, con, t, exact, &others, bits)?;
+            keep &= inside(q, con, t, x.as_ref(), &others, bits)?;
         }
         if keep {
-            kept.push(t.clone());
+            kept.push((t.clone(), x));
         }
     }
     Some(kept)
