@@ -429,3 +429,139 @@ fn projections_along_directions_through_poles_of_spheres_and_ellipsoids() {
         }
     }
 }
+
+/// Feet of `p = centre + (δ, 0, h)`-like points on the axis of an ellipsoid (local
+/// frame = world axes): the poles `(0, 0, ±c)` and, per equatorial axis `i` with
+/// `aᵢ ≠ c`, `q_z = h c²/(c² − aᵢ²)`, `R = 1 − q_z²/c²`, two feet `±aᵢ√R` when
+/// `R > 0` (closed forms of the foot condition `qᵢ = pᵢ/(1 + λ/aᵢ²)`).
+fn ellipsoid_axis_feet(abc: [f64; 3], h: f64) -> Vec<[Float; 3]> {
+    let g = |x: f64| Float::with_val(BITS, x);
+    let c = g(abc[2]);
+    let mut out = vec![
+        [g(0.0), g(0.0), c.clone()],
+        [g(0.0), g(0.0), -c.clone()],
+    ];
+    for i in 0..2 {
+        if abc[i] == abc[2] {
+            continue;
+        }
+        let ai2 = g(abc[i] * abc[i]);
+        let c2 = Float::with_val(BITS, &c * &c);
+        let qz = g(h) * &c2 / (c2.clone() - &ai2);
+        let r = g(1.0) - Float::with_val(BITS, &qz * &qz) / Float::with_val(BITS, &c * &c);
+        if r > 0 {
+            let x = g(abc[i]) * r.sqrt();
+            for s in [-1.0, 1.0] {
+                let mut q = [g(0.0), g(0.0), qz.clone()];
+                q[i] = Float::with_val(BITS, &x * s);
+                out.push(q);
+            }
+        }
+    }
+    out
+}
+
+/// Each truth near exactly one box and each box near exactly one truth (within
+/// `tol`; 0: containment).
+fn one_to_one_xyz(pts: &[Point], truths: &[[Float; 3]], centre: [f64; 3], tol: f64, what: &str) {
+    assert_eq!(pts.len(), truths.len(), "{what}: count {pts:?}");
+    let near = |p: &Point, t: &[Float; 3]| {
+        (0..3).all(|i| {
+            let x = Float::with_val(BITS, &t[i] + centre[i]);
+            p.xyz_box[i][0] - tol <= x && x <= p.xyz_box[i][1] + tol
+        })
+    };
+    for t in truths {
+        let n = pts.iter().filter(|p| near(p, t)).count();
+        assert_eq!(n, 1, "{what}: truth {t:?} near {n} boxes of {pts:?}");
+    }
+    for p in pts {
+        let n = truths.iter().filter(|t| near(p, t)).count();
+        assert_eq!(n, 1, "{what}: box {:?} near {n} truths", p.xyz_box);
+    }
+}
+
+#[test]
+fn projections_of_points_on_and_near_the_axis_of_ellipsoids() {
+    let mut rng = Rng::new(1405);
+    let shapes = [[1.0, 2.0, 3.0], [3.0, 2.0, 1.0], [2.0, 0.5, 1.0], [1.0, 1.5, 0.75]];
+    for case in 0..200 {
+        let c = [rng.dyadic(), rng.dyadic(), rng.dyadic()];
+        let abc = shapes[rng.below(shapes.len())];
+        let h = rng.dyadic() / 2.0;
+        let delta = [0.0, 1e-9, 1e-12][case % 3];
+        let p = [c[0] + delta, c[1], c[2] + h];
+        if p[0] - c[0] != delta {
+            continue;
+        }
+        let onto = format!(
+            r#"{{"type":"ellipsoid","center":{c:?},"a":{:?},"b":{:?},"c":{:?}}}"#,
+            abc[0], abc[1], abc[2]
+        );
+        let json = format!(r#"{{"id":"t","op":"project","point":{p:?},"onto":{onto}}}"#);
+        let what = format!("case {case}: {json}");
+        let truths = ellipsoid_axis_feet(abc, h);
+        // skip the degenerate heights (p at a centre of curvature of a pole, R = 0)
+        let degenerate = (0..2).any(|i| {
+            let qz = h * abc[2] * abc[2] / (abc[2] * abc[2] - abc[i] * abc[i]);
+            (qz.abs() - abc[2]).abs() < 1e-6
+        });
+        if degenerate {
+            continue;
+        }
+        let r = solve(&json, None);
+        decided(&r, &what);
+        let pts = points(&r.value);
+        // on the axis: containment; 1e-9 off: within 1e-6 of the axis feet
+        let tol = if delta == 0.0 { 0.0 } else { 1e-6 };
+        one_to_one_xyz(pts, &truths, c, tol, &what);
+        if delta == 0.0 {
+            // the poles: every u is a parameter
+            for q in pts.iter().filter(|q| q.xyz[0] == c[0] && q.xyz[1] == c[1]) {
+                let u = q.param_box.as_ref().unwrap()[0][0];
+                assert!(u[0] <= 0.0 && u[1] >= 6.283185307179586, "{what}: u {u:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn projections_of_points_on_the_axis_of_paraboloids() {
+    let mut rng = Rng::new(1406);
+    for case in 0..200 {
+        let c = [rng.dyadic(), rng.dyadic(), rng.dyadic()];
+        let (a, b) = [(1.0, 2.0), (0.5, 1.0), (2.0, 0.75)][rng.below(3)];
+        let h = rng.dyadic() / 2.0;
+        let range = [0.0, 2.0];
+        let p = [c[0], c[1], c[2] + h];
+        let onto = format!(
+            r#"{{"type":"paraboloid","center":{c:?},"a":{a:?},"b":{b:?},"axis":[0.0,0.0,1.0],"range":{range:?}}}"#
+        );
+        let json = format!(r#"{{"id":"t","op":"project","point":{p:?},"onto":{onto}}}"#);
+        let what = format!("case {case}: {json}");
+        // the vertex, and per axis i: ζ = h − aᵢ²/2, two feet ±aᵢ√ζ when 0 < ζ ≤ 4
+        let g = |x: f64| Float::with_val(BITS, x);
+        let mut truths = vec![[g(0.0), g(0.0), g(0.0)]];
+        for (i, ai) in [a, b].into_iter().enumerate() {
+            let zeta = h - ai * ai / 2.0; // exact for these dyadics
+            if zeta == 0.0 {
+                truths.clear(); // degenerate: the vertex is a multiple foot; skip
+                break;
+            }
+            if zeta > 0.0 && zeta <= 4.0 {
+                let x = g(ai) * g(zeta).sqrt();
+                for s in [-1.0, 1.0] {
+                    let mut q = [g(0.0), g(0.0), g(zeta)];
+                    q[i] = Float::with_val(BITS, &x * s);
+                    truths.push(q);
+                }
+            }
+        }
+        if truths.is_empty() {
+            continue;
+        }
+        let r = solve(&json, None);
+        decided(&r, &what);
+        one_to_one_xyz(points(&r.value), &truths, c, 0.0, &what);
+    }
+}

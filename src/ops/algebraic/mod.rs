@@ -22,6 +22,7 @@ mod conic;
 mod conic_conic;
 mod conic_plane;
 pub(crate) mod curve_on_surface;
+pub(crate) mod curve_quadric;
 mod foot2;
 mod kquad;
 mod line;
@@ -29,6 +30,7 @@ mod line_surface;
 mod on_surface;
 pub(crate) mod pairs;
 mod params;
+pub(crate) mod quadric_feet;
 pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};

@@ -11,6 +11,7 @@ use crate::curve::lines::Line;
 use crate::curve::Curve;
 use crate::error::GeomError;
 use crate::ops::algebraic::pairs::{ray_surface, sphere_params};
+use crate::ops::algebraic::quadric_feet::project_point_quadric;
 use crate::ops::answer::{Answer, Point};
 use crate::ops::certified::CertifiedPoint;
 use crate::ops::closed_surface::{is_closed_shell, sphere_feet};
@@ -32,6 +33,9 @@ pub(crate) fn onto_surface(
         return along(s, p, d, nearest, opts);
     }
     if let Some(r) = onto_sphere(s, &p, nearest) {
+        return Ok(r);
+    }
+    if let Some(r) = project_point_quadric(p, s, nearest) {
         return Ok(r);
     }
     let nodes = surface_nodes(s)?;
