@@ -6,6 +6,12 @@
 //! points when `(s − ρ)² < d² < (s + ρ)²`, one (tangent) at equality, none otherwise;
 //! the points are `x = (d² + s² − ρ²)/2d`, `y = ±√(s² − x²)` (MPFR, 2000 bits).
 
+#![allow(
+    clippy::needless_range_loop,
+    clippy::cmp_owned,
+    clippy::useless_conversion
+)]
+
 use geocert::certificate::Status;
 use geocert::io::{read_cases, shape};
 use geocert::num::rng::Rng;
@@ -42,7 +48,12 @@ fn q(x: f64) -> Rational {
 fn circles_at_gaps_from_tangency_to_a_sphere() {
     let mut rng = Rng::new(1407);
     // (R, h, s) with R² − h² = s², dyadic
-    let sections = [(1.25, 0.75, 1.0), (1.25, -0.75, 1.0), (2.5, 2.0, 1.5), (1.0, 0.0, 1.0)];
+    let sections = [
+        (1.25, 0.75, 1.0),
+        (1.25, -0.75, 1.0),
+        (2.5, 2.0, 1.5),
+        (1.0, 0.0, 1.0),
+    ];
     let gaps = [1e-3, 1e-6, 1e-9, 1e-12, 1e-15, 0.0];
     let mut counts = [0usize; 3];
     for case in 0..300 {
@@ -50,7 +61,11 @@ fn circles_at_gaps_from_tangency_to_a_sphere() {
         let rho = 0.25 + (rng.below(8) as f64) / 8.0;
         let gap = gaps[case % gaps.len()] * if rng.coin() { 1.0 } else { -1.0 };
         // external (d = s + ρ) or internal (d = |s − ρ|) tangency, moved by the gap
-        let d = if rng.coin() || rho == s { s + rho + gap } else { (s - rho).abs() + gap };
+        let d = if rng.coin() || rho == s {
+            s + rho + gap
+        } else {
+            (s - rho).abs() + gap
+        };
         if d <= 0.0 {
             continue;
         }
@@ -88,16 +103,30 @@ fn circles_at_gaps_from_tangency_to_a_sphere() {
         };
         assert_eq!(pts.len(), truths.len(), "{json}: {pts:?}");
         let holds = |p: &Point, t: &[Float; 2]| {
-            p.xyz_box[0][0] <= t[0] && t[0] <= p.xyz_box[0][1]
-                && p.xyz_box[1][0] <= t[1] && t[1] <= p.xyz_box[1][1]
-                && p.xyz_box[2][0] <= h && h <= p.xyz_box[2][1]
+            p.xyz_box[0][0] <= t[0]
+                && t[0] <= p.xyz_box[0][1]
+                && p.xyz_box[1][0] <= t[1]
+                && t[1] <= p.xyz_box[1][1]
+                && p.xyz_box[2][0] <= h
+                && h <= p.xyz_box[2][1]
         };
         for t in &truths {
-            assert_eq!(pts.iter().filter(|p| holds(p, t)).count(), 1, "{json}: {t:?} in {pts:?}");
+            assert_eq!(
+                pts.iter().filter(|p| holds(p, t)).count(),
+                1,
+                "{json}: {t:?} in {pts:?}"
+            );
         }
         for p in pts {
-            assert_eq!(truths.iter().filter(|t| holds(p, t)).count(), 1, "{json}: {p:?}");
+            assert_eq!(
+                truths.iter().filter(|t| holds(p, t)).count(),
+                1,
+                "{json}: {p:?}"
+            );
         }
     }
-    assert!(counts.iter().all(|&c| c > 10), "every kind exercised: {counts:?}");
+    assert!(
+        counts.iter().all(|&c| c > 10),
+        "every kind exercised: {counts:?}"
+    );
 }

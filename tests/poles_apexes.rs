@@ -6,6 +6,12 @@
 //! 4000 bits), independently of the library's rational polynomials in `tan α`, and for
 //! lines through the apex from the closed form (the apex alone, a double root).
 
+#![allow(
+    clippy::needless_range_loop,
+    clippy::cmp_owned,
+    clippy::useless_conversion
+)]
+
 use geocert::certificate::Status;
 use geocert::io::{position, read_cases, shape};
 use geocert::num::rng::Rng;
@@ -255,7 +261,7 @@ fn lines_through_a_cone_apex_meet_it_only_there() {
         // every u is a parameter of the apex; v = 0
         let b = &p.param_box.as_ref().unwrap()[0];
         assert!(
-            b[0][0] <= 0.0 && b[0][1] >= 6.283185307179586,
+            b[0][0] <= 0.0 && b[0][1] >= std::f64::consts::TAU,
             "{what}: u {b:?}"
         );
         assert!(b[1][0] <= 0.0 && b[1][1] >= 0.0, "{what}: v {b:?}");
@@ -424,7 +430,10 @@ fn projections_along_directions_through_poles_of_spheres_and_ellipsoids() {
             // through the poles: every u is a parameter
             for q in pts {
                 let u = q.param_box.as_ref().unwrap()[0][0];
-                assert!(u[0] <= 0.0 && u[1] >= 6.283185307179586, "{what}: u {u:?}");
+                assert!(
+                    u[0] <= 0.0 && u[1] >= std::f64::consts::TAU,
+                    "{what}: u {u:?}"
+                );
             }
         }
     }
@@ -437,10 +446,7 @@ fn projections_along_directions_through_poles_of_spheres_and_ellipsoids() {
 fn ellipsoid_axis_feet(abc: [f64; 3], h: f64) -> Vec<[Float; 3]> {
     let g = |x: f64| Float::with_val(BITS, x);
     let c = g(abc[2]);
-    let mut out = vec![
-        [g(0.0), g(0.0), c.clone()],
-        [g(0.0), g(0.0), -c.clone()],
-    ];
+    let mut out = vec![[g(0.0), g(0.0), c.clone()], [g(0.0), g(0.0), -c.clone()]];
     for i in 0..2 {
         if abc[i] == abc[2] {
             continue;
@@ -484,7 +490,12 @@ fn one_to_one_xyz(pts: &[Point], truths: &[[Float; 3]], centre: [f64; 3], tol: f
 #[test]
 fn projections_of_points_on_and_near_the_axis_of_ellipsoids() {
     let mut rng = Rng::new(1405);
-    let shapes = [[1.0, 2.0, 3.0], [3.0, 2.0, 1.0], [2.0, 0.5, 1.0], [1.0, 1.5, 0.75]];
+    let shapes = [
+        [1.0, 2.0, 3.0],
+        [3.0, 2.0, 1.0],
+        [2.0, 0.5, 1.0],
+        [1.0, 1.5, 0.75],
+    ];
     for case in 0..200 {
         let c = [rng.dyadic(), rng.dyadic(), rng.dyadic()];
         let abc = shapes[rng.below(shapes.len())];
@@ -519,7 +530,10 @@ fn projections_of_points_on_and_near_the_axis_of_ellipsoids() {
             // the poles: every u is a parameter
             for q in pts.iter().filter(|q| q.xyz[0] == c[0] && q.xyz[1] == c[1]) {
                 let u = q.param_box.as_ref().unwrap()[0][0];
-                assert!(u[0] <= 0.0 && u[1] >= 6.283185307179586, "{what}: u {u:?}");
+                assert!(
+                    u[0] <= 0.0 && u[1] >= std::f64::consts::TAU,
+                    "{what}: u {u:?}"
+                );
             }
         }
     }

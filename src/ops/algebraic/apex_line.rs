@@ -160,12 +160,12 @@ fn cone(line: &ExactLine<3>, w: &V3, z: &V3, z0: &Rational, z1: &Rational, r: &R
     let c = poly(&[ww - &z00 - Rational::from(r * r), -rz0 * 2u32, -z00]);
     let grad = std::array::from_fn(|i| {
         let g0 = poly(&[
-            Rational::from(&w[i] - Rational::from(z0 * &z[i])),
+            &w[i] - Rational::from(z0 * &z[i]),
             -Rational::from(r * &z[i]),
             -Rational::from(z0 * &z[i]),
         ]);
         let g1 = poly(&[
-            Rational::from(&d[i] - Rational::from(z1 * &z[i])),
+            &d[i] - Rational::from(z1 * &z[i]),
             Rational::new(),
             -Rational::from(z1 * &z[i]),
         ]);
@@ -302,8 +302,8 @@ fn surface_params(
             *zeta
         }
         Kind::Paraboloid { semi, negative } => {
-            x = x / Interval::point(semi[0]);
-            y = y / Interval::point(semi[1]);
+            x /= Interval::point(semi[0]);
+            y /= Interval::point(semi[1]);
             let root = Interval::from_bounds(zeta.lo().max(0.0), zeta.hi().max(0.0)).sqrt();
             if negative {
                 (x, y) = (x.neg(), y.neg());

@@ -69,7 +69,10 @@ pub(crate) fn curve_quadric(
             let fine = Rational::from(1) >> 200u32;
             x.refine_to_width(&fine);
             y.refine_to_width(&fine);
-            let (al, be) = (enclose(&RatInterval::from_root(&x)), enclose(&RatInterval::from_root(&y)));
+            let (al, be) = (
+                enclose(&RatInterval::from_root(&x)),
+                enclose(&RatInterval::from_root(&y)),
+            );
             let xyz: [Interval; 3] = std::array::from_fn(|i| {
                 MpfrInterval::from_rational(&frame.p[i], BITS)
                     .add(&al.mul(&MpfrInterval::from_rational(&frame.x[i], BITS)))

@@ -241,7 +241,14 @@ impl ConicFrame {
     /// The curve in its plane coordinates: `k₁α² + k₂β² − 1` as `[a, b, c, d, e, f]`.
     pub(super) fn own_conic(&self) -> [Rational; 6] {
         let z = Rational::new;
-        [self.k1.clone(), z(), self.k2.clone(), z(), z(), Rational::from(-1)]
+        [
+            self.k1.clone(),
+            z(),
+            self.k2.clone(),
+            z(),
+            z(),
+            Rational::from(-1),
+        ]
     }
 }
 

@@ -55,7 +55,8 @@ fn q(x: f64) -> Rational {
 /// Axes each a signed unit coordinate vector.
 fn axis_aligned(axes: &[[f64; 3]; 3]) -> bool {
     axes.iter().all(|a| {
-        a.iter().filter(|&&x| x != 0.0).count() == 1 && a.iter().all(|&x| x == 0.0 || x.abs() == 1.0)
+        a.iter().filter(|&&x| x != 0.0).count() == 1
+            && a.iter().all(|&x| x == 0.0 || x.abs() == 1.0)
     })
 }
 
@@ -89,7 +90,9 @@ fn setup(p: &[f64; 3], surface: &AnySurface) -> Option<Setup> {
             .sum()
     });
     let n = if zeta.is_some() { 2 } else { 3 };
-    let w = (0..n).map(|i| Rational::from(1) / (q(semi[i]) * q(semi[i]))).collect();
+    let w = (0..n)
+        .map(|i| Rational::from(1) / (q(semi[i]) * q(semi[i])))
+        .collect();
     Some(Setup {
         centre,
         axes,
@@ -137,7 +140,10 @@ fn enclose(x: &RatInterval) -> MpfrInterval {
 /// The main branch (module doc).
 fn main_feet(s: &Setup, gs: &[(Rational, Vec<usize>, Rational)]) -> Vec<Foot> {
     let lin = |w: &Rational| Polynomial::from_coeffs(vec![Rational::from(1), w.clone()]);
-    let live: Vec<_> = gs.iter().filter(|g| g.2.cmp0() != Ordering::Equal).collect();
+    let live: Vec<_> = gs
+        .iter()
+        .filter(|g| g.2.cmp0() != Ordering::Equal)
+        .collect();
     let square = |w: &Rational| &lin(w) * &lin(w);
     let product = |skip: Option<usize>| {
         live.iter()
@@ -177,7 +183,11 @@ fn main_feet(s: &Setup, gs: &[(Rational, Vec<usize>, Rational)]) -> Vec<Foot> {
             let degenerate = dead.iter().any(|d| r.is_root_of(d));
             Foot {
                 local,
-                multiplicity: if degenerate { r.multiplicity().max(2) } else { r.multiplicity() },
+                multiplicity: if degenerate {
+                    r.multiplicity().max(2)
+                } else {
+                    r.multiplicity()
+                },
             }
         })
         .collect()
@@ -187,10 +197,12 @@ fn main_feet(s: &Setup, gs: &[(Rational, Vec<usize>, Rational)]) -> Vec<Foot> {
 /// interval `lam`; `None` when a denominator's enclosure holds 0.
 fn main_coordinates(s: &Setup, lam: &RatInterval) -> Option<[MpfrInterval; 3]> {
     let mut out: [MpfrInterval; 3] = std::array::from_fn(|_| MpfrInterval::point(0.0, BITS));
-    for i in 0..s.w.len() {
+    for (i, slot) in out.iter_mut().enumerate().take(s.w.len()) {
         if s.p[i].cmp0() != Ordering::Equal {
-            let den = lam.scale(&s.w[i]).add(&RatInterval::point(Rational::from(1)));
-            out[i] = enclose(&RatInterval::point(s.p[i].clone()).div(&den)?);
+            let den = lam
+                .scale(&s.w[i])
+                .add(&RatInterval::point(Rational::from(1)));
+            *slot = enclose(&RatInterval::point(s.p[i].clone()).div(&den)?);
         }
     }
     if s.zeta.is_some() {
@@ -208,7 +220,7 @@ fn branch_feet(s: &Setup, gs: &[(Rational, Vec<usize>, Rational)]) -> Option<Vec
         let mut local: Vec<Rational> = (0..3).map(|_| Rational::new()).collect();
         let mut rest = r_poly(s).eval(&lam);
         for i in (0..s.w.len()).filter(|i| !g.1.contains(i)) {
-            local[i] = Rational::from(&s.p[i] / (Rational::from(&lam * &s.w[i]) + 1u32));
+            local[i] = &s.p[i] / (Rational::from(&lam * &s.w[i]) + 1u32);
             rest -= Rational::from(&local[i] * &local[i]) * &s.w[i];
         }
         if let Some(([lo, hi], _)) = &s.zeta {
@@ -254,9 +266,11 @@ pub(crate) fn project_point_quadric(
     let gs = groups(&s);
     let mut feet = main_feet(&s, &gs);
     feet.extend(branch_feet(&s, &gs)?);
-    let mut points: Vec<(Point, MpfrInterval)> = feet.iter().map(|f| point(&s, surface, &p, f)).collect();
+    let mut points: Vec<(Point, MpfrInterval)> =
+        feet.iter().map(|f| point(&s, surface, &p, f)).collect();
     if nearest {
-        let best = (0..points.len()).min_by(|&i, &j| points[i].1.lo().total_cmp(points[j].1.lo()))?;
+        let best =
+            (0..points.len()).min_by(|&i, &j| points[i].1.lo().total_cmp(points[j].1.lo()))?;
         let proven = (0..points.len()).all(|j| j == best || points[best].1.hi() < points[j].1.lo());
         if !proven {
             return None;
@@ -288,7 +302,9 @@ fn point(s: &Setup, surface: &AnySurface, p: &[f64; 3], f: &Foot) -> (Point, Mpf
     });
     let b: [Interval; 3] = std::array::from_fn(|j| world[j].to_interval());
     let uv = match &s.zeta {
-        None => closed(surface).map(|c| surface_params(&c, &b)).unwrap_or_default(),
+        None => closed(surface)
+            .map(|c| surface_params(&c, &b))
+            .unwrap_or_default(),
         Some((_, negative)) => paraboloid_params(s, f, *negative),
     };
     let distance = d2.sqrt().to_interval().midpoint();
