@@ -14,6 +14,7 @@
 //! double root and two close crossings are two proven simple ones. Magnitudes from
 //! 1e-300 to 1e300 are handled exactly (nothing overflows in rationals).
 
+mod apex_line;
 mod bezier_line2;
 mod bezier_plane;
 mod bivariate;
@@ -21,12 +22,15 @@ mod conic;
 mod conic_conic;
 mod conic_plane;
 pub(crate) mod curve_on_surface;
+pub(crate) mod curve_quadric;
 mod foot2;
+mod kquad;
 mod line;
 mod line_surface;
 mod on_surface;
 pub(crate) mod pairs;
 mod params;
+pub(crate) mod quadric_feet;
 pub(crate) mod section_answer;
 pub(crate) mod three_spheres;
 

@@ -193,6 +193,24 @@ impl Implicit {
         self.on_plane(o, d, &zero).is_zero()
     }
 
+    /// A quadric restricted to the plane of `c`, as the conic
+    /// `[a, b, c, d, e, f]` in the plane coordinates `(α, β)` of [`ConicFrame`]; `None`
+    /// for a torus.
+    pub(super) fn plane_conic(&self, c: &ConicFrame) -> Option<[Rational; 6]> {
+        let Implicit::Quadric(_) = self else {
+            return None;
+        };
+        let g = self.on_plane(&c.p, &c.x, &c.y).0;
+        Some([
+            g[2][0].clone(),
+            g[1][1].clone(),
+            g[0][2].clone(),
+            g[1][0].clone(),
+            g[0][1].clone(),
+            g[0][0].clone(),
+        ])
+    }
+
     /// The circle or ellipse lies on the implicit surface (module doc); `None` for
     /// other curves.
     pub(super) fn contains_conic(&self, c: &ConicFrame) -> Option<bool> {
@@ -217,6 +235,21 @@ pub(super) fn cross(a: &V3, b: &V3) -> V3 {
         let (j, k) = ((i + 1) % 3, (i + 2) % 3);
         Rational::from(&a[j] * &b[k]) - Rational::from(&a[k] * &b[j])
     })
+}
+
+impl ConicFrame {
+    /// The curve in its plane coordinates: `k₁α² + k₂β² − 1` as `[a, b, c, d, e, f]`.
+    pub(super) fn own_conic(&self) -> [Rational; 6] {
+        let z = Rational::new;
+        [
+            self.k1.clone(),
+            z(),
+            self.k2.clone(),
+            z(),
+            z(),
+            Rational::from(-1),
+        ]
+    }
 }
 
 /// The exact frame of a circle or ellipse (arc or whole); `None` for other curves.

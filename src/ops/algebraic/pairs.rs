@@ -120,7 +120,7 @@ pub(super) fn closed(surface: &AnySurface) -> Option<Closed> {
 /// The angle of `(x, y)` in `[0, 2π)`, enclosed: `atan2` or, near its branch cut on the
 /// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0)` shifted by
 /// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure.
-fn angle(y: &Interval, x: &Interval) -> Interval {
+pub(super) fn angle(y: &Interval, x: &Interval) -> Interval {
     let pi = x.pi_like();
     let direct = y.atan2(x);
     let across = y.neg().atan2(&x.neg()) + pi;
@@ -135,7 +135,7 @@ fn angle(y: &Interval, x: &Interval) -> Interval {
 
 /// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`; an empty
 /// enclosure (the angle of the origin) stands for the whole circle.
-fn param(b: Interval) -> (f64, [f64; 2]) {
+pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
     if b.is_empty() {
         // A point on the axis (a pole): every angle is its parameter.
         let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
@@ -357,6 +357,31 @@ pub(crate) fn line_surface(
     line_first: bool,
 ) -> Option<Certified<Answer>> {
     let line = line3(line)?;
+    line_surface_exact(&line, surface, line_first)
+}
+
+/// The line `p + t·d` (doubles taken exactly, `d ≠ 0`) against a surface, as
+/// [`line_surface_exact`] with the surface's parameters first: the hits of a
+/// projection along a direction (§3.5).
+pub(crate) fn ray_surface(
+    p: [f64; 3],
+    d: [f64; 3],
+    surface: &AnySurface,
+) -> Option<Certified<Answer>> {
+    let (o, d) = crate::ops::rational::exact::exact_line(&p, &d).ok()?;
+    line_surface_exact(&ExactLine { o, d, range: None }, surface, false)
+}
+
+/// [`line_surface`] on an exact line; also a whole-turn cone or paraboloid through its
+/// implicit form ([`super::apex_line`]), which decides lines through the apex.
+pub(super) fn line_surface_exact(
+    line: &ExactLine<3>,
+    surface: &AnySurface,
+    line_first: bool,
+) -> Option<Certified<Answer>> {
+    if let Some(r) = super::apex_line::line_apex_surface(line, surface, line_first) {
+        return Some(r);
+    }
     let shape = closed(surface)?;
     let cut = match &shape {
         Closed::Quadric(q, _, _) => intersect_line_quadric_exact(&line.o, &line.d, q),
@@ -379,7 +404,7 @@ pub(crate) fn line_surface(
             Some(p) => (p, true),
             None => (surface_params(&shape, b), false),
         };
-    Some(line_cut_answer(&line, cut, params, line_first))
+    Some(line_cut_answer(line, cut, params, line_first))
 }
 
 /// A space curve against a plane of the linear kernel, exactly where the restriction

@@ -6,6 +6,7 @@ use super::intersect_curved;
 use crate::certificate::Certified;
 use crate::error::GeomError;
 use crate::ops::algebraic::curve_on_surface as on_surface;
+use crate::ops::algebraic::curve_quadric::curve_quadric;
 use crate::ops::algebraic::pairs;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
@@ -58,9 +59,12 @@ fn algebraic(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError
         (Shape::Surface(s), Shape::Linear(l)) => pairs::line_surface(l, s, false)
             .or_else(|| on_surface::line_on_surface(l, s, false))
             .map(Ok),
-        (Shape::Curve(c), Shape::Surface(s)) | (Shape::Surface(s), Shape::Curve(c)) => {
-            on_surface::curve_on_surface(c, s).map(Ok)
-        }
+        (Shape::Curve(c), Shape::Surface(s)) => on_surface::curve_on_surface(c, s)
+            .or_else(|| curve_quadric(c, s, false))
+            .map(Ok),
+        (Shape::Surface(s), Shape::Curve(c)) => on_surface::curve_on_surface(c, s)
+            .or_else(|| curve_quadric(c, s, true))
+            .map(Ok),
         (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false).map(Ok),
         (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true).map(Ok),
         _ => pairs::plane_pair(a, b),

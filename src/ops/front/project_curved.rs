@@ -10,7 +10,8 @@ use crate::curve::any::AnyCurve3;
 use crate::curve::lines::Line;
 use crate::curve::Curve;
 use crate::error::GeomError;
-use crate::ops::algebraic::pairs::sphere_params;
+use crate::ops::algebraic::pairs::{ray_surface, sphere_params};
+use crate::ops::algebraic::quadric_feet::project_point_quadric;
 use crate::ops::answer::{Answer, Point};
 use crate::ops::certified::CertifiedPoint;
 use crate::ops::closed_surface::{is_closed_shell, sphere_feet};
@@ -32,6 +33,9 @@ pub(crate) fn onto_surface(
         return along(s, p, d, nearest, opts);
     }
     if let Some(r) = onto_sphere(s, &p, nearest) {
+        return Ok(r);
+    }
+    if let Some(r) = project_point_quadric(p, s, nearest) {
         return Ok(r);
     }
     let nodes = surface_nodes(s)?;
@@ -65,6 +69,18 @@ fn along(
         return Err(GeomError::ZeroDirection {
             field: "direction".into(),
         });
+    }
+    if let Some(mut r) = ray_surface(p, d, s) {
+        // Decided exactly through the implicit form (poles and apexes included).
+        if let Answer::Points(points) = &mut r.value {
+            for q in points.iter_mut() {
+                q.distance = Some(distance(&q.xyz, &p));
+            }
+        }
+        if nearest && matches!(r.value, Answer::Points(_)) {
+            keep_nearest_hit(&mut r, 1);
+        }
+        return Ok(r);
     }
     let range = reach(&p, &d, &surface_box(s)).ok_or_else(|| GeomError::Unsupported {
         field: "onto".into(),
