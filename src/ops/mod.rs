@@ -39,6 +39,7 @@ pub mod shape;
 pub mod space_curves;
 pub mod surface_surface;
 pub mod verify;
+pub mod view;
 
 pub use answer::{
     Answer, BlendAnswer, BlendComponent, BlendGrid, BlendKind, CurveAnswer, CurveEnd, CurveVertex,
