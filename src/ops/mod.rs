@@ -52,3 +52,4 @@ pub use options::{Options, ProjectOptions};
 pub use polyhedron::Polyhedron;
 pub use section::section;
 pub use shape::{Linear, LinearObject, Position, Shape};
+pub use view::{contour, visibility, View};

@@ -16,7 +16,7 @@
 //! periods, the period enclosed.
 
 use super::system::ContourFn;
-use crate::certify::graph::{enclose_at, prove_graph, GraphBox};
+use crate::certify::graph::{enclose_at, graph_krawczyk, prove_graph, Graph, GraphBox};
 use crate::num::vector::norm_f64;
 use crate::num::Interval;
 use crate::surface::Surface;
@@ -259,7 +259,26 @@ impl<S: Surface> Chains<'_, '_, S> {
             let r = p.region();
             r[0].contains(x[0]) && r[1].contains(x[1])
         })?;
-        let e = enclose_at(self.f, &p.graph, &Interval::point(x[p.graph.fixed]), 24)?;
-        Some([e[0], e[1]])
+        let j = p.graph.fixed;
+        let t = Interval::point(x[j]);
+        let e = enclose_at(self.f, &p.graph, &t, 3)?;
+        // keep contracting while it helps: E ← E ∩ K(E, t) (each K holds the point)
+        let mut z = e[1 - j];
+        for _ in 0..40 {
+            let mut b = [t; 2];
+            b[1 - j] = z;
+            let k = match graph_krawczyk(self.f, &b, j) {
+                Graph::Unique(k) | Graph::Image(k) => k[0],
+                Graph::Inconclusive => break,
+            };
+            let next = z.intersection(&k);
+            if next.is_empty() || next.width() >= z.width() {
+                break;
+            }
+            z = next;
+        }
+        let mut b = [t; 2];
+        b[1 - j] = z;
+        Some(b)
     }
 }

@@ -21,6 +21,7 @@
 mod chain;
 mod complete;
 mod contour;
+mod front;
 mod projection;
 mod system;
 mod trace;
@@ -29,6 +30,7 @@ mod visibility;
 pub use contour::{
     contour_surface, Contour, ContourBound, ContourCurve, ContourEnd, ContourOptions, ContourVertex,
 };
+pub use front::{contour, curves_answer, visibility};
 pub use projection::{picture_axes, Rays, View};
 pub use system::ContourFn;
 pub use visibility::{visibility_point_surface, Visibility, VisibilityAnswer};
