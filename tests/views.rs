@@ -66,10 +66,9 @@ fn table_rows_of_13_6() {
         let again = View::parallel(d).unwrap();
         let n = d.iter().map(|x| x * x).sum::<f64>().sqrt();
         let c = cross(v.e_x, v.e_y);
-        for i in 0..3 {
-            assert!(close(again.e_x[i], v.e_x[i], 1e-15) && close(again.e_y[i], v.e_y[i], 1e-15));
-            assert!(close(c[i], d[i] / n, 1e-15));
-        }
+        let same = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| close(*x, y, 1e-15));
+        assert!(same(again.e_x, v.e_x) && same(again.e_y, v.e_y));
+        assert!(same(c, d.map(|x| x / n)));
     }
 }
 

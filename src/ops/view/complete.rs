@@ -190,17 +190,16 @@ fn domain_and_lines<S>(
 ) -> ([[f64; 2]; 2], Vec<(usize, f64, bool)>) {
     let mut range = chains.search;
     let mut lines = Vec::new();
-    for k in 0..2 {
+    for (k, side) in range.iter_mut().enumerate() {
+        let [lo, hi] = *side;
         if chains.periodic[k] {
-            let lo = chains.search[k][0];
             let c = cut(lo, chains.period[k].midpoint(), alt);
             // reach at least one full period beyond the cut (the period enclosed)
-            let hi = next_up((Interval::point(c) + chains.period[k]).hi());
-            range[k] = [c, hi];
+            *side = [c, next_up((Interval::point(c) + chains.period[k]).hi())];
             lines.push((k, c, true));
         } else {
-            lines.push((k, chains.search[k][0], false));
-            lines.push((k, chains.search[k][1], false));
+            lines.push((k, lo, false));
+            lines.push((k, hi, false));
         }
     }
     (range, lines)
