@@ -76,6 +76,8 @@ pub struct Case {
     pub nearest: bool,
     pub shell: Option<ObjectSpec>,
     pub claim: Option<serde_json::Value>,
+    /// `silhouette`: the view (docs/FORMAT.md "Views"), read by [`super::view::view`].
+    pub view: Option<serde_json::Value>,
     /// `fillet`, `chamfer`: what the blend asks besides its two objects.
     pub blend: BlendFields,
     pub options: Options,
@@ -123,6 +125,8 @@ struct RawCase {
     pub shell: Option<serde_json::Value>,
     /// The answer of another program, for `geocert verify`.
     pub claim: Option<serde_json::Value>,
+    /// `silhouette`: the view (a name or an object).
+    pub view: Option<serde_json::Value>,
     /// `fillet`: the ball radius ρ.
     pub radius: Option<Double>,
     /// `chamfer`: the legs on the first and the second object.
@@ -204,6 +208,7 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
             nearest: raw.nearest,
             shell,
             claim: raw.claim,
+            view: raw.view,
             blend: BlendFields {
                 radius: raw.radius,
                 legs: raw.legs,

@@ -15,6 +15,7 @@ mod solve;
 pub mod stream;
 pub mod strict;
 mod verify;
+pub mod view;
 
 pub use answer_out::result as answer_result;
 pub use build::{position, shape};

@@ -133,6 +133,21 @@ pub fn answer(case: &Case) -> Result<Certified<Answer>, GeomError> {
             ops::section(&shape_at(0)?, &shape_at(1)?, &options(case)?)
         }
         Op::Fillet | Op::Chamfer => blend(case),
+        Op::Silhouette => {
+            if case.objects.len() != 1 {
+                return Err(GeomError::CountMismatch {
+                    field: "objects".into(),
+                    expected: "1 object (the surface)".into(),
+                    found: case.objects.len().to_string(),
+                });
+            }
+            let view = case.view.as_ref().ok_or_else(|| missing("view", case.op))?;
+            ops::view::contour(
+                &shape(&case.objects[0], "objects[0]")?,
+                &super::view::view(view)?,
+                &options(case)?,
+            )
+        }
         other => Err(GeomError::Unsupported {
             field: "op".into(),
             reason: format!("`{}` is not implemented in this build", other.as_str()),

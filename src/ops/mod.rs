@@ -39,6 +39,7 @@ pub mod shape;
 pub mod space_curves;
 pub mod surface_surface;
 pub mod verify;
+pub mod view;
 
 pub use answer::{
     Answer, BlendAnswer, BlendComponent, BlendGrid, BlendKind, CurveAnswer, CurveEnd, CurveVertex,
@@ -51,3 +52,4 @@ pub use options::{Options, ProjectOptions};
 pub use polyhedron::Polyhedron;
 pub use section::section;
 pub use shape::{Linear, LinearObject, Position, Shape};
+pub use view::{contour, visibility, View};
