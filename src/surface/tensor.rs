@@ -43,7 +43,9 @@ impl Net {
 }
 
 /// Check a rectangular net of at least `min_rows × min_cols` finite points and its
-/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`).
+/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`);
+/// a net that spans no surface or a subnormal weight is refused
+/// ([`super::degenerate`]).
 pub(crate) fn validate_net(
     points: &[Vec<[f64; 3]>],
     weights: Option<&[Vec<f64>]>,
@@ -108,12 +110,14 @@ pub(crate) fn validate_net(
                         },
                         other => other,
                     })?;
+                    super::degenerate::check_weight(&field, x)?;
                     flat_w.push(x);
                 }
             }
             Some(flat_w)
         }
     };
+    super::degenerate::check_net_spans(rows, cols, &flat, weights.as_deref())?;
     Ok(Net {
         rows,
         cols,
