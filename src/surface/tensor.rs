@@ -35,6 +35,16 @@ impl Net {
     pub fn point_rows(&self) -> Vec<Vec<[f64; 3]>> {
         self.points.chunks(self.cols).map(<[_]>::to_vec).collect()
     }
+    /// Refuse a net that spans no surface ([`super::degenerate`]; after the other
+    /// checks of the constructor, so that a bad knot is reported first).
+    pub fn check_spans(&self) -> Result<(), GeomError> {
+        super::degenerate::check_net_spans(
+            self.rows,
+            self.cols,
+            &self.points,
+            self.weights.as_deref(),
+        )
+    }
     /// The weights, row by row, if rational.
     pub fn weight_rows(&self) -> Option<Vec<Vec<f64>>> {
         let w = self.weights.as_ref()?;
@@ -117,7 +127,6 @@ pub(crate) fn validate_net(
             Some(flat_w)
         }
     };
-    super::degenerate::check_net_spans(rows, cols, &flat, weights.as_deref())?;
     Ok(Net {
         rows,
         cols,
