@@ -69,6 +69,15 @@ pub enum GeomError {
     /// curvature on the side of the blend.
     #[error("{field}: {reason}")]
     DegenerateBlend { field: String, reason: String },
+    /// A patch whose control net does not span a surface: every control point equal
+    /// (collapsed), all on one line, or the patch independent of one parameter (every
+    /// row or every column of the net the same): its normal vanishes everywhere.
+    #[error("{field}: {reason}")]
+    DegenerateSurface { field: String, reason: String },
+    /// A positive weight that is subnormal (below 2⁻¹⁰²² ≈ 2.2·10⁻³⁰⁸): the rational
+    /// form divides by it and its reciprocal overflows.
+    #[error("{field}: weight {value} is subnormal (below 2.2e-308)")]
+    DegenerateWeight { field: String, value: String },
 }
 
 impl GeomError {
@@ -89,6 +98,8 @@ impl GeomError {
             GeomError::InvalidValue { .. } => "invalid_value",
             GeomError::Unsupported { .. } => "unsupported",
             GeomError::DegenerateBlend { .. } => "degenerate_blend",
+            GeomError::DegenerateSurface { .. } => "degenerate_surface",
+            GeomError::DegenerateWeight { .. } => "degenerate_weight",
         }
     }
 
@@ -108,7 +119,9 @@ impl GeomError {
             | GeomError::ParameterOutsideDomain { field, .. }
             | GeomError::InvalidValue { field, .. }
             | GeomError::Unsupported { field, .. }
-            | GeomError::DegenerateBlend { field, .. } => field,
+            | GeomError::DegenerateBlend { field, .. }
+            | GeomError::DegenerateSurface { field, .. }
+            | GeomError::DegenerateWeight { field, .. } => field,
         }
     }
 
@@ -127,7 +140,9 @@ impl GeomError {
             | GeomError::ParameterOutsideDomain { field, .. }
             | GeomError::InvalidValue { field, .. }
             | GeomError::Unsupported { field, .. }
-            | GeomError::DegenerateBlend { field, .. } => field,
+            | GeomError::DegenerateBlend { field, .. }
+            | GeomError::DegenerateSurface { field, .. }
+            | GeomError::DegenerateWeight { field, .. } => field,
         }
     }
 

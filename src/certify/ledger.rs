@@ -110,15 +110,15 @@ impl Ledger {
         true
     }
 
-    fn late(&self) -> bool {
-        self.deadline
-            .is_some_and(|d| std::time::Instant::now() >= d)
+    /// Whether the deadline has passed ([`super::past`]).
+    pub(super) fn late(&self) -> bool {
+        super::past(self.deadline)
     }
 
     /// Why [`Ledger::take_box`] refused: the reason recorded with the boxes left.
     pub fn spent(&self) -> &'static str {
         if self.late() {
-            "time limit reached"
+            super::TIME_LIMIT
         } else {
             "box budget spent"
         }

@@ -91,7 +91,22 @@ impl Default for Options {
     }
 }
 
+/// The reason recorded when the deadline has passed (also [`Ledger::spent`]).
+pub const TIME_LIMIT: &str = "time limit reached";
+
+/// Whether `deadline` has passed (one `Instant::now()`; `None` never passes). The
+/// cooperative check of issue 20: every long loop of the certifier and of the float
+/// searches before it calls this once per iteration (batch).
+pub fn past(deadline: Option<std::time::Instant>) -> bool {
+    deadline.is_some_and(|d| std::time::Instant::now() >= d)
+}
+
 impl Options {
+    /// Whether [`Options::deadline`] has passed ([`past`]).
+    pub fn late(&self) -> bool {
+        past(self.deadline)
+    }
+
     /// Reject a negative or non-finite `min_width` (field `options.min_width`).
     pub fn check(&self) -> Result<(), GeomError> {
         if !(self.min_width >= 0.0 && self.min_width.is_finite()) {

@@ -39,6 +39,9 @@ pub fn certify_root<S: System>(
         .unwrap_or((guess.to_vec(), f64::INFINITY));
     let levels = levels(opts.max_bits);
     for &bits in &levels {
+        if opts.late() {
+            return Ok(undecided(&x, super::TIME_LIMIT.into()));
+        }
         let found = if bits == 53 {
             certify_at::<S, Interval>(sys, &x, step, bits)
         } else {
@@ -50,6 +53,9 @@ pub fn certify_root<S: System>(
     }
     let mut singular = None;
     for &bits in &levels {
+        if opts.late() {
+            break;
+        }
         let found = if bits == 53 {
             singular_at::<S, Interval>(sys, &x, guess, bits)
         } else {
@@ -69,6 +75,9 @@ pub fn certify_root<S: System>(
     }
     if let Some(root) = singular {
         return Ok(verified(root));
+    }
+    if opts.late() {
+        return Ok(undecided(&x, super::TIME_LIMIT.into()));
     }
     let reason = format!(
         "no proof up to the precision cap of {} bits",

@@ -72,6 +72,9 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
         let mut singular = None;
         let mut decided = false;
         for l in level..top {
+            if ledger.late() {
+                break;
+            }
             let bits = ledger.levels[l];
             match cluster_at(sys, &hull, bits) {
                 Some(Decision::NoRoot) => {
@@ -107,6 +110,8 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
         }
         if let Some((enclosure, d, bits)) = singular {
             ledger.singular(&enclosure, &d, bits);
+        } else if ledger.late() {
+            ledger.undecided(&hull, super::TIME_LIMIT);
         } else if level + 1 < top {
             decide(sys, cluster, level + 1, ledger);
         } else {
@@ -131,6 +136,10 @@ fn separate<S: System>(sys: &S, ledger: &mut Ledger) {
         'grow: for grow in [0.0] {
             let region = boxes::inflate(&hull, grow, 0.0);
             for l in 0..ledger.levels.len() {
+                if ledger.late() {
+                    // the singular box stays as proven
+                    break;
+                }
                 let bits = ledger.levels[l];
                 match cluster_at(sys, &region, bits) {
                     Some(Decision::TwoRoots(roots)) => {
@@ -172,7 +181,8 @@ fn identify<S: System>(sys: &S, ledger: &mut Ledger) {
         for [a, b] in pairs {
             let hull = boxes::hull(&a, &b);
             let levels = ledger.levels.clone();
-            let proven = levels.into_iter().find_map(|bits| {
+            let late = || ledger.late();
+            let proven = levels.into_iter().take_while(|_| !late()).find_map(|bits| {
                 let v = if bits == 53 {
                     one_root_in::<S, Interval>(sys, &hull, bits)
                 } else {
@@ -193,6 +203,7 @@ fn identify<S: System>(sys: &S, ledger: &mut Ledger) {
                         bits,
                     );
                 }
+                None if ledger.late() => ledger.undecided(&hull, super::TIME_LIMIT),
                 None => ledger.undecided(&hull, super::ledger::CONFLICT),
             }
         }

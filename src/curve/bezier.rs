@@ -24,7 +24,7 @@ pub struct Bezier<const D: usize> {
 
 /// Validate control points and optional weights (shared with NURBS curves):
 /// `non_finite` (`points[i][j]`, `weights[i]`), `count_mismatch` (`weights`),
-/// `non_positive_weight` (`weights[i]`).
+/// `non_positive_weight` / `degenerate_weight` (subnormal, `weights[i]`).
 pub(crate) fn check_net<const D: usize>(
     points: &[[f64; D]],
     weights: Option<&[f64]>,
@@ -46,6 +46,9 @@ pub(crate) fn check_net<const D: usize>(
                 field: format!("weights[{i}]"),
                 value: format!("{}", w[i]),
             });
+        }
+        for (i, &x) in w.iter().enumerate() {
+            crate::surface::degenerate::check_weight(&format!("weights[{i}]"), x)?;
         }
     }
     Ok(())

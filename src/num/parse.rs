@@ -5,6 +5,13 @@
 //! decimal `[+-]digits[.digits][(e|E)[+-]digits]` (also `.5` and `5.`). The decimal
 //! exponent is limited to ±100000 so that a short string cannot ask for gigabytes; such
 //! a string is rejected as `invalid_number`.
+//!
+//! Size caps (issue 20, docs/FORMAT.md "Numbers"): a string holds at most
+//! [`MAX_EXACT_DIGITS`] digits, and the numerator and denominator of its value at most
+//! [`MAX_EXACT_BITS`] bits each (so `1e-5000`, short as it is, is refused): the exact
+//! curved paths cost a power of the bit length (a line of 100 000-digit coordinates
+//! against a sphere or torus took seconds to minutes). Beyond them the number is an
+//! `invalid_value` error naming the field, whose message gives the size, not the digits.
 
 use rug::{Integer, Rational};
 
@@ -13,12 +20,38 @@ use crate::error::GeomError;
 /// The largest decimal exponent accepted in a number string.
 pub const MAX_DECIMAL_EXPONENT: i64 = 100_000;
 
-/// Parse an exact number string into a rational; the error names `field`.
+/// The most digits a number string may hold (all digits, with those of a fraction's
+/// denominator and of the exponent).
+pub const MAX_EXACT_DIGITS: usize = 4000;
+
+/// The most bits of the numerator and of the denominator of an exact number from text.
+pub const MAX_EXACT_BITS: u32 = 16_384;
+
+/// Parse an exact number string into a rational; the error names `field`: a malformed
+/// string is `invalid_number`, one beyond the size caps (module doc) `invalid_value`.
 pub fn parse_rational(field: &str, text: &str) -> Result<Rational, GeomError> {
-    parse_inner(text).ok_or_else(|| GeomError::InvalidNumber {
+    let too_big = |what: String| {
+        GeomError::InvalidValue {
+        field: field.to_string(),
+        reason: format!("an exact number of {what} is beyond the maximum of {MAX_EXACT_DIGITS} digits and {MAX_EXACT_BITS} bits (numerator and denominator each)"),
+    }
+    };
+    let digits = text.bytes().filter(u8::is_ascii_digit).count();
+    if digits > MAX_EXACT_DIGITS {
+        return Err(too_big(format!("{digits} digits")));
+    }
+    let q = parse_inner(text).ok_or_else(|| GeomError::InvalidNumber {
         field: field.to_string(),
         text: text.to_string(),
-    })
+    })?;
+    let bits = q
+        .numer()
+        .significant_bits()
+        .max(q.denom().significant_bits());
+    if bits > MAX_EXACT_BITS {
+        return Err(too_big(format!("{bits} bits")));
+    }
+    Ok(q)
 }
 
 /// The exact value of a finite double; NaN and infinities are rejected naming `field`.
@@ -115,6 +148,23 @@ mod tests {
         assert_eq!(parse_rational("x", "5.").unwrap(), Rational::from(5));
         let tiny = parse_rational("x", "1e-400").unwrap();
         assert_eq!(tiny * Rational::from(Integer::u_pow_u(10, 400)), 1);
+    }
+
+    #[test]
+    fn numbers_beyond_the_size_caps_name_the_field() {
+        let long = format!("0.{}", "7".repeat(MAX_EXACT_DIGITS - 1));
+        assert!(parse_rational("x", &long).is_ok());
+        for bad in [
+            format!("0.{}", "7".repeat(MAX_EXACT_DIGITS)),
+            format!("1/{}", "3".repeat(MAX_EXACT_DIGITS)),
+            "1e-5000".to_string(),
+            "1e99999".to_string(),
+        ] {
+            let e = parse_rational("objects[0].origin[1]", &bad).unwrap_err();
+            assert_eq!(e.kind(), "invalid_value", "{bad}");
+            assert_eq!(e.field(), "objects[0].origin[1]");
+            assert!(e.to_string().len() < 300);
+        }
     }
 
     #[test]

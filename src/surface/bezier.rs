@@ -27,6 +27,7 @@ impl BezierSurface {
         weights: Option<&[Vec<f64>]>,
     ) -> Result<BezierSurface, GeomError> {
         let net = validate_net(points, weights, 2, 2)?;
+        net.check_spans()?;
         Ok(BezierSurface {
             net,
             domain: ([0.0, 1.0], [0.0, 1.0]),

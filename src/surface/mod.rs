@@ -10,6 +10,7 @@ pub mod any;
 pub mod basis;
 pub mod bezier;
 pub mod bilinear;
+pub mod degenerate;
 pub mod differential;
 pub mod frame;
 pub mod implicit;

@@ -43,6 +43,7 @@ impl NurbsSurface {
         let net = validate_net(points, weights, q + 1, p + 1)?;
         let du = knot_vector("knots_u", &knots_u, net.cols, p)?;
         let dv = knot_vector("knots_v", &knots_v, net.rows, q)?;
+        net.check_spans()?;
         Ok(NurbsSurface {
             degrees: [p, q],
             knots: [knots_u, knots_v],

@@ -35,6 +35,16 @@ impl Net {
     pub fn point_rows(&self) -> Vec<Vec<[f64; 3]>> {
         self.points.chunks(self.cols).map(<[_]>::to_vec).collect()
     }
+    /// Refuse a net that spans no surface ([`super::degenerate`]; after the other
+    /// checks of the constructor, so that a bad knot is reported first).
+    pub fn check_spans(&self) -> Result<(), GeomError> {
+        super::degenerate::check_net_spans(
+            self.rows,
+            self.cols,
+            &self.points,
+            self.weights.as_deref(),
+        )
+    }
     /// The weights, row by row, if rational.
     pub fn weight_rows(&self) -> Option<Vec<Vec<f64>>> {
         let w = self.weights.as_ref()?;
@@ -43,7 +53,9 @@ impl Net {
 }
 
 /// Check a rectangular net of at least `min_rows × min_cols` finite points and its
-/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`).
+/// positive weights (errors name `points`, `points[i]`, `points[i][j]`, `weights...`);
+/// a net that spans no surface or a subnormal weight is refused
+/// ([`super::degenerate`]).
 pub(crate) fn validate_net(
     points: &[Vec<[f64; 3]>],
     weights: Option<&[Vec<f64>]>,
@@ -108,6 +120,7 @@ pub(crate) fn validate_net(
                         },
                         other => other,
                     })?;
+                    super::degenerate::check_weight(&field, x)?;
                     flat_w.push(x);
                 }
             }

@@ -112,6 +112,11 @@ impl CertifiedRoot {
     }
 }
 
+/// What a float guess whose certification proved nothing costs from the budget of
+/// [`certify_roots_with`]'s guesses: the cluster tests ran at each of the four
+/// precisions up to 512 bits, each counted as 16 boxes, as in [`certify::solve`].
+pub const FAILED_GUESS_COST: usize = 64;
+
 /// Every root of `sys` over `unknowns`, certified (module doc); `guesses` are the float
 /// answers, certified one by one when the subdivision is not complete.
 pub fn certify_roots<S: System>(
@@ -160,14 +165,34 @@ pub fn certify_roots_with<S: System>(
     let mut bits = solved.bits;
     let mut reason = solved.reason.clone();
     if !complete {
+        // The guesses draw on a budget of their own, `max_boxes`: a proven one costs a
+        // box, one that proves nothing (the cluster tests failed at every precision)
+        // [`FAILED_GUESS_COST`]; and the deadline is checked per guess (issue 20: a
+        // line lying in a flat degree-30 patch gives hundreds of guesses, each
+        // escalating to the precision cap for half a second).
+        let mut tried = 0usize;
         for g in guesses {
             if roots.iter().any(|r| contains(&r.enclosure, g, unknowns)) {
                 continue;
             }
+            if opts.late() || tried >= opts.max_boxes {
+                let why = if opts.late() {
+                    certify::TIME_LIMIT
+                } else {
+                    "box budget spent"
+                };
+                let r = reason.get_or_insert_with(String::new);
+                if !r.contains(why) {
+                    r.push_str(&format!("; {why} before every float candidate was tried"));
+                }
+                break;
+            }
             let c = certify::certify_root(sys, g, opts)?;
             if c.status == Status::Undecided {
+                tried += FAILED_GUESS_COST;
                 continue;
             }
+            tried += 1;
             // The float answer may lie just outside the domain: a root proven outside
             // is not an answer, one whose box crosses the boundary is undecided.
             let place = placement(&c.value.enclosure, &search, unknowns);

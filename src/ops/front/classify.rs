@@ -73,8 +73,13 @@ fn closed_surface(
             nearest_on_sphere(&p, sphere.frame().origin(), sphere.radius())
         }
         _ => {
-            let feet =
-                project_point_surface(s, &p, &surface_nodes(s)?, &opts.precision, &opts.certify())?;
+            let feet = project_point_surface(
+                s,
+                &p,
+                &surface_nodes(s, opts)?,
+                &opts.precision,
+                &opts.certify(),
+            )?;
             nearest_foot(s, &p, &feet)
         }
     };

@@ -131,8 +131,8 @@ fn plane_curves(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Answer
     let c = intersect_curve2_curve2(
         &ca,
         &cb,
-        &curve_samples(&ca)?,
-        &curve_samples(&cb)?,
+        &curve_samples(&ca, opts)?,
+        &curve_samples(&cb, opts)?,
         &opts.precision,
         &opts.certify(),
     )?;
@@ -188,8 +188,8 @@ fn curve_surface(
     let c = intersect_curve_surface(
         s,
         &curve,
-        &curve_samples(&curve)?,
-        &surface_nodes(s)?,
+        &curve_samples(&curve, opts)?,
+        &surface_nodes(s, opts)?,
         TURN,
         &opts.precision,
         &opts.certify(),
@@ -241,7 +241,11 @@ pub(crate) fn three(
     if let Some(exact) = crate::ops::algebraic::three_spheres::intersect_three_spheres([r, s, q]) {
         return Ok(exact);
     }
-    let (nr, ns, nq) = (surface_nodes(r)?, surface_nodes(s)?, surface_nodes(q)?);
+    let (nr, ns, nq) = (
+        surface_nodes(r, opts)?,
+        surface_nodes(s, opts)?,
+        surface_nodes(q, opts)?,
+    );
     let c = intersect_three_surfaces((r, s, q), [&nr, &ns, &nq], &opts.precision, &opts.certify())?;
     Ok(points::points(c, &[2, 2, 2], None))
 }

@@ -38,7 +38,7 @@ pub(crate) fn onto_surface(
     if let Some(r) = project_point_quadric(p, s, nearest) {
         return Ok(r);
     }
-    let nodes = surface_nodes(s)?;
+    let nodes = surface_nodes(s, opts)?;
     let c = project_point_surface(s, &p, &nodes, &opts.precision, &opts.certify())?;
     let n = nearest.then(|| nearest::nearest_point_surface(s, &p, &c));
     Ok(with_nearest(c, &[2], &p, n))
@@ -51,7 +51,13 @@ pub(crate) fn onto_curve<C: Curve<D>, const D: usize>(
     nearest: bool,
     opts: &Options,
 ) -> Result<Certified<Answer>, GeomError> {
-    let feet = project_point_curve(c, &p, &curve_samples(c)?, &opts.precision, &opts.certify())?;
+    let feet = project_point_curve(
+        c,
+        &p,
+        &curve_samples(c, opts)?,
+        &opts.precision,
+        &opts.certify(),
+    )?;
     let n = nearest.then(|| nearest::nearest_point_curve(c, &p, &feet));
     Ok(with_nearest(feet, &[1], &p, n))
 }
@@ -90,8 +96,8 @@ fn along(
     let c = intersect_curve_surface(
         s,
         &line,
-        &curve_samples(&line)?,
-        &surface_nodes(s)?,
+        &curve_samples(&line, opts)?,
+        &surface_nodes(s, opts)?,
         TURN,
         &opts.precision,
         &opts.certify(),

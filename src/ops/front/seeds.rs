@@ -5,9 +5,11 @@
 
 use std::f64::consts::PI;
 
+use crate::certify;
 use crate::curve::Curve;
 use crate::error::GeomError;
 use crate::num::Interval;
+use crate::ops::options::Options;
 use crate::surface::Surface;
 use crate::walk::surface::{SurfaceWalk, SurfaceWalkOptions};
 use crate::walk::{CurveWalk, WalkOptions};
@@ -15,20 +17,68 @@ use crate::walk::{CurveWalk, WalkOptions};
 /// The turning angle Δα of the surface walks that seed the curved operations.
 pub(crate) const TURN: f64 = PI / 10.0;
 
-/// The curve's walk samples `(t, Δt)` (§2.1).
-pub(crate) fn curve_samples<const D: usize, C: Curve<D>>(
-    c: &C,
-) -> Result<Vec<(f64, f64)>, GeomError> {
-    Ok(CurveWalk::new(c, WalkOptions::default())?
-        .map(|s| (s.t, s.step))
-        .collect())
+/// The most walk nodes (or samples) kept for seeding (issue 20): a legitimate walk
+/// takes a few hundred; a degenerate one (a coordinate line of zero speed everywhere
+/// takes the smallest step, `range·10⁻⁴`, in both directions) would take 10⁸ and
+/// gigabytes. Beyond it the seeds are a [`GRID`] × [`GRID`] grid instead.
+pub(crate) const MAX_SEEDS: usize = 1 << 16;
+
+/// The side of the fallback grid of seeds.
+pub(crate) const GRID: usize = 64;
+
+/// Up to [`MAX_SEEDS`] items of `walk`, stopping early when `deadline` passes (checked
+/// every 256 items); `Err(partial)` when the walk did not end.
+fn bounded<T>(
+    walk: impl Iterator<Item = T>,
+    deadline: Option<std::time::Instant>,
+) -> Result<Vec<T>, Vec<T>> {
+    let mut out = Vec::new();
+    for (i, x) in walk.enumerate() {
+        if i >= MAX_SEEDS || (i % 256 == 0 && certify::past(deadline)) {
+            return Err(out);
+        }
+        out.push(x);
+    }
+    Ok(out)
 }
 
-/// The surface's walk nodes `(u, v, Δu, Δv)` (§2.2–§2.3).
-pub(crate) fn surface_nodes<S: Surface>(s: &S) -> Result<Vec<[f64; 4]>, GeomError> {
-    Ok(SurfaceWalk::new(s, SurfaceWalkOptions::new(TURN))?
-        .map(|n| [n.u, n.v, n.du, n.dv])
-        .collect())
+/// The curve's walk samples `(t, Δt)` (§2.1); a walk cut short by [`MAX_SEEDS`] or the
+/// deadline gives [`GRID`]² evenly spaced samples instead. Seeds only propose
+/// candidates: completeness comes from the certifier's subdivision, so fewer seeds
+/// never make an answer wrong (at worst `undecided`).
+pub(crate) fn curve_samples<const D: usize, C: Curve<D>>(
+    c: &C,
+    opts: &Options,
+) -> Result<Vec<(f64, f64)>, GeomError> {
+    let walk = CurveWalk::new(c, WalkOptions::default())?.map(|s| (s.t, s.step));
+    Ok(bounded(walk, opts.deadline).unwrap_or_else(|_| {
+        let (lo, hi) = c.domain();
+        let n = GRID * GRID;
+        let step = (hi - lo) / n as f64;
+        (0..=n)
+            .map(|i| ((lo + step * i as f64).min(hi), step))
+            .collect()
+    }))
+}
+
+/// The surface's walk nodes `(u, v, Δu, Δv)` (§2.2–§2.3); a walk cut short by
+/// [`MAX_SEEDS`] or the deadline gives a [`GRID`] × [`GRID`] grid of nodes instead
+/// (as [`curve_samples`]: seeds only).
+pub(crate) fn surface_nodes<S: Surface>(s: &S, opts: &Options) -> Result<Vec<[f64; 4]>, GeomError> {
+    let walk = SurfaceWalk::new(s, SurfaceWalkOptions::new(TURN))?.map(|n| [n.u, n.v, n.du, n.dv]);
+    Ok(bounded(walk, opts.deadline).unwrap_or_else(|_| {
+        let ([u0, u1], [v0, v1]) = s.domain();
+        let (du, dv) = ((u1 - u0) / GRID as f64, (v1 - v0) / GRID as f64);
+        (0..=GRID)
+            .flat_map(|j| {
+                (0..=GRID).map(move |i| {
+                    let u = (u0 + du * i as f64).min(u1);
+                    let v = (v0 + dv * j as f64).min(v1);
+                    [u, v, du, dv]
+                })
+            })
+            .collect()
+    }))
 }
 
 /// The parameters of `o + t·d` inside the box `bound` (slab method), widened outward so

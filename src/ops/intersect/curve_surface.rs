@@ -84,6 +84,35 @@ pub fn intersect_curve_surface_f64<S: Surface, C: Curve<3>>(
     turn: f64,
     precision: &Precision,
 ) -> Vec<CurveSurfacePoint> {
+    let seeds = Seeds {
+        curve_samples,
+        surface_nodes,
+        turn,
+    };
+    intersect_curve_surface_until(surface, curve, &seeds, precision, None)
+}
+
+/// The most initial guesses kept (issue 20: a curve lying in a surface makes one at
+/// nearly every pair of samples). Guesses only seed the float search; the certified
+/// operation's completeness comes from subdivision.
+pub const MAX_GUESSES: usize = 1 << 14;
+
+/// The walk samples of both objects and the walk's Δα.
+pub(crate) struct Seeds<'a> {
+    pub curve_samples: &'a [(f64, f64)],
+    pub surface_nodes: &'a [[f64; 4]],
+    pub turn: f64,
+}
+
+/// [`intersect_curve_surface_f64`] that stops when `deadline` passes (checked once per
+/// curve sample and once per guess): the points found by then.
+pub(crate) fn intersect_curve_surface_until<S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    seeds: &Seeds,
+    precision: &Precision,
+    deadline: Option<std::time::Instant>,
+) -> Vec<CurveSurfacePoint> {
     let ([u0, u1], [v0, v1]) = surface.domain();
     let (t0, t1) = curve.domain();
     let closed = surface.is_closed();
@@ -92,57 +121,14 @@ pub fn intersect_curve_surface_f64<S: Surface, C: Curve<3>>(
         Coordinate::new(v0, v1, closed[1], precision),
         Coordinate::new(t0, t1, curve.is_closed(), precision),
     ];
+    let (guesses, length) = initial_guesses(surface, curve, seeds, precision, deadline);
     let sin_sw = precision.sin_switch();
-    let mut guesses = Vec::new();
-    let mut length = 0.0f64;
-    for &(t, dt) in curve_samples {
-        let c = curve.jet(&t, 1);
-        length = length.max(norm_f64(&c[0]));
-        for &[u, v, du, dv] in surface_nodes {
-            let s = surface.jet(&u, &v, 1);
-            let n = cross(&s[1], &s[2]);
-            let f = sub(&s[0], &c[0]);
-            let nc = dot(&n, &c[1]);
-            let parallel = nc.abs() < sin_sw * norm_f64(&n) * norm_f64(&c[1]);
-            if !parallel {
-                // (5.4) at the pair of samples: the tangent line meets the tangent plane.
-                let x = [
-                    -dot(&f, &cross(&s[2], &c[1])) / nc,
-                    dot(&f, &cross(&s[1], &c[1])) / nc,
-                    dot(&f, &n) / nc,
-                ];
-                if x[0].abs() <= du && x[1].abs() <= dv && x[2].abs() <= dt {
-                    guesses.push([u + x[0], v + x[1], t + x[2]]);
-                }
-            } else {
-                // Tangency candidate (§5.2, reconstructed): the point of the tangent
-                // line nearest to the node, c* = c + τ·c', within the curve window; the
-                // foot of c* on the tangent plane within the surface windows; and the
-                // line close to the plane.
-                let tau = dot(&f, &c[1]) / dot(&c[1], &c[1]);
-                let near = std::array::from_fn(|i| c[0][i] + tau * c[1][i]);
-                let w = sub(&near, &s[0]);
-                let h = dot(&w, &n) / dot(&n, &n).sqrt();
-                let (g11, g12, g22) = (dot(&s[1], &s[1]), dot(&s[1], &s[2]), dot(&s[2], &s[2]));
-                let det = g11 * g22 - g12 * g12;
-                let (a, b) = (dot(&s[1], &w), dot(&s[2], &w));
-                let (x, y) = ((g22 * a - g12 * b) / det, (g11 * b - g12 * a) / det);
-                let reach = turn
-                    * (g11.sqrt() * du)
-                        .min(g22.sqrt() * dv)
-                        .min(norm_f64(&c[1]) * dt);
-                if tau.abs() <= dt && x.abs() <= du && y.abs() <= dv && h.abs() <= reach {
-                    guesses.push([u + x, v + y, t + tau]);
-                }
-            }
-        }
-    }
-    for &[u, v, _, _] in surface_nodes {
-        length = length.max(norm_f64(&surface.jet(&u, &v, 0)[0]));
-    }
     let delta_len = precision.delta * length.max(1.0);
     let mut found: Vec<(CurveSurfacePoint, f64)> = Vec::new();
     for x0 in guesses {
+        if crate::certify::past(deadline) {
+            break;
+        }
         let system = |x: &[f64; 3]| {
             let (f, j) = curve_surface_equations(surface, curve, x, true);
             (f, j.unwrap_or([[f64::NAN; 3]; 3]))
@@ -183,6 +169,82 @@ pub fn intersect_curve_surface_f64<S: Surface, C: Curve<3>>(
     let mut points: Vec<CurveSurfacePoint> = merged.into_iter().map(|(p, _)| p).collect();
     points.sort_by(|a, b| a.t.total_cmp(&b.t));
     points
+}
+
+/// The initial guesses (5.3) at every pair of a curve sample and a surface node (the
+/// surface's jets computed once per node), at most [`MAX_GUESSES`], and the largest
+/// coordinate seen (the model scale of `δ_len`).
+fn initial_guesses<S: Surface, C: Curve<3>>(
+    surface: &S,
+    curve: &C,
+    seeds: &Seeds,
+    precision: &Precision,
+    deadline: Option<std::time::Instant>,
+) -> (Vec<[f64; 3]>, f64) {
+    let sin_sw = precision.sin_switch();
+    let jets: Vec<Vec<[f64; 3]>> = seeds
+        .surface_nodes
+        .iter()
+        .map(|&[u, v, _, _]| surface.jet(&u, &v, 1))
+        .collect();
+    let mut length = jets.iter().map(|s| norm_f64(&s[0])).fold(0.0f64, f64::max);
+    let mut guesses = Vec::new();
+    for &(t, dt) in seeds.curve_samples {
+        if guesses.len() >= MAX_GUESSES || crate::certify::past(deadline) {
+            break;
+        }
+        let c = curve.jet(&t, 1);
+        length = length.max(norm_f64(&c[0]));
+        for (&[u, v, du, dv], s) in seeds.surface_nodes.iter().zip(&jets) {
+            let window = [du, dv, dt];
+            if let Some([x, y, z]) = pair_guess(s, &c, window, seeds.turn, sin_sw) {
+                guesses.push([u + x, v + y, t + z]);
+            }
+        }
+    }
+    guesses.truncate(MAX_GUESSES);
+    (guesses, length)
+}
+
+/// The guess of (5.3) at one pair of samples, as an offset `(Δu, Δv, Δt)` inside the
+/// windows `[du, dv, dt]`: where the tangent line meets the tangent plane, or, where
+/// they are (nearly) parallel, the tangency candidate.
+fn pair_guess(
+    s: &[[f64; 3]],
+    c: &[[f64; 3]],
+    [du, dv, dt]: [f64; 3],
+    turn: f64,
+    sin_sw: f64,
+) -> Option<[f64; 3]> {
+    let n = cross(&s[1], &s[2]);
+    let f = sub(&s[0], &c[0]);
+    let nc = dot(&n, &c[1]);
+    let parallel = nc.abs() < sin_sw * norm_f64(&n) * norm_f64(&c[1]);
+    if !parallel {
+        // (5.4) at the pair of samples: the tangent line meets the tangent plane.
+        let x = [
+            -dot(&f, &cross(&s[2], &c[1])) / nc,
+            dot(&f, &cross(&s[1], &c[1])) / nc,
+            dot(&f, &n) / nc,
+        ];
+        return (x[0].abs() <= du && x[1].abs() <= dv && x[2].abs() <= dt).then_some(x);
+    }
+    // Tangency candidate (§5.2, reconstructed): the point of the tangent line nearest
+    // to the node, c* = c + τ·c', within the curve window; the foot of c* on the
+    // tangent plane within the surface windows; and the line close to the plane.
+    let tau = dot(&f, &c[1]) / dot(&c[1], &c[1]);
+    let near = std::array::from_fn(|i| c[0][i] + tau * c[1][i]);
+    let w = sub(&near, &s[0]);
+    let h = dot(&w, &n) / dot(&n, &n).sqrt();
+    let (g11, g12, g22) = (dot(&s[1], &s[1]), dot(&s[1], &s[2]), dot(&s[2], &s[2]));
+    let det = g11 * g22 - g12 * g12;
+    let (a, b) = (dot(&s[1], &w), dot(&s[2], &w));
+    let (x, y) = ((g22 * a - g12 * b) / det, (g11 * b - g12 * a) / det);
+    let reach = turn
+        * (g11.sqrt() * du)
+            .min(g22.sqrt() * dv)
+            .min(norm_f64(&c[1]) * dt);
+    (tau.abs() <= dt && x.abs() <= du && y.abs() <= dv && h.abs() <= reach).then_some([x, y, tau])
 }
 
 /// Merge duplicates (§0.4) with the relative tolerance `delta` on every parameter, then
@@ -307,17 +369,16 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
     use crate::ops::certified::{
         certify_roots, curve_point, curve_unknowns, surface_unknowns, CertifiedPoint, Unknowns,
     };
-    let guesses: Vec<Vec<f64>> = intersect_curve_surface_f64(
-        surface,
-        curve,
+    let seeds = Seeds {
         curve_samples,
         surface_nodes,
         turn,
-        precision,
-    )
-    .iter()
-    .map(|p| vec![p.surface_params[0], p.surface_params[1], p.t])
-    .collect();
+    };
+    let guesses: Vec<Vec<f64>> =
+        intersect_curve_surface_until(surface, curve, &seeds, precision, opts.deadline)
+            .iter()
+            .map(|p| vec![p.surface_params[0], p.surface_params[1], p.t])
+            .collect();
     let unknowns = Unknowns::concat(&[surface_unknowns(surface), curve_unknowns(curve)]);
     let sys = CurveSurfaceSystem { surface, curve };
     let roots = certify_roots(&sys, &unknowns, &guesses, opts)?;

@@ -141,6 +141,11 @@ pub fn intersect_three_surfaces_f64<R: Surface, S: Surface, Q: Surface>(
     let overlap = |a: &Node, b: &Node| norm_f64(&sub(&a.point, &b.point)) <= a.radius + b.radius;
     let mut guesses = Vec::new();
     for c in &nq {
+        // guesses only seed the search (issue 20: three surfaces through one curve
+        // would give one at nearly every triple of nodes)
+        if guesses.len() >= super::curve_surface::MAX_GUESSES {
+            break;
+        }
         let near_s = near(&gs, &c.point);
         for i in near(&gr, &c.point) {
             let a = &nr[i];
