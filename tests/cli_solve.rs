@@ -276,7 +276,7 @@ fn demo_status(id: &str) -> &'static str {
         "nearest point of a torus" | "sphere ∩ sphere: a circle" | "sphere ∩ ellipsoid" => {
             "verified"
         }
-        "touching spheres" => "verified_singular",
+        "touching spheres" => "exact",
         // One of the four branches is not proven to join (OPERATIONS.md §16.12 family).
         "Steinmetz: crossing cylinders" => "undecided",
         _ => "exact",

@@ -112,7 +112,8 @@ fn tangent_spheres_are_one_point_and_apart_spheres_are_empty() {
         r#"{"id":"t","op":"intersect","objects":[{"type":"sphere","center":[0,0,0],"radius":1},{"type":"sphere","center":[2,0,0],"radius":1}]}"#,
         r#"{"id":"e","op":"intersect","objects":[{"type":"sphere","center":[0,0,0],"radius":1},{"type":"sphere","center":[2,0,0],"radius":0.999999999}]}"#,
     ]);
-    assert_eq!(r[0]["status"], "verified_singular", "{}", r[0]);
+    // The exact touching point of the radical-plane section (ops::front::sections).
+    assert_eq!(r[0]["status"], "exact", "{}", r[0]);
     assert_eq!(r[0]["kind"], "points");
     assert_eq!(r[0]["complete"], true);
     let p = &r[0]["points"][0];

@@ -48,7 +48,7 @@ pub(crate) fn check_net<const D: usize>(
             });
         }
         for (i, &x) in w.iter().enumerate() {
-            crate::surface::degenerate::check_weight(&format!("weights[{i}]"), x)?;
+            super::weight::check_weight(&format!("weights[{i}]"), x)?;
         }
     }
     Ok(())

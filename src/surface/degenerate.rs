@@ -20,19 +20,8 @@ use rug::Rational;
 
 use crate::error::GeomError;
 
-/// The smallest normal double, `2⁻¹⁰²²`: positive weights below it are refused.
-pub const MIN_WEIGHT: f64 = f64::MIN_POSITIVE;
-
-/// A subnormal positive weight is refused naming `field` (`degenerate_weight`).
-pub(crate) fn check_weight(field: &str, w: f64) -> Result<(), GeomError> {
-    if w > 0.0 && w < MIN_WEIGHT {
-        return Err(GeomError::DegenerateWeight {
-            field: field.into(),
-            value: format!("{w:e}"),
-        });
-    }
-    Ok(())
-}
+pub(crate) use crate::curve::weight::check_weight;
+pub use crate::curve::weight::MIN_WEIGHT;
 
 fn exact(p: &[f64; 3]) -> [Rational; 3] {
     p.map(|x| Rational::from_f64(x).unwrap_or_default())

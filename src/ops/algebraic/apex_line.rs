@@ -23,8 +23,8 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
+use super::exact_line::{angle, param, ExactLine};
 use super::kquad::{solve, Constraint, KQuad, KRoot};
-use super::pairs::{angle, param, ExactLine};
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::certify::univariate::Polynomial;
 use crate::num::round::round_rational;

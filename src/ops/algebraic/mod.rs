@@ -23,6 +23,7 @@ mod conic_conic;
 mod conic_plane;
 pub(crate) mod curve_on_surface;
 pub(crate) mod curve_quadric;
+mod exact_line;
 mod foot2;
 mod kquad;
 mod line;

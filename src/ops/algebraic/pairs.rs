@@ -14,6 +14,7 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
+pub(super) use super::exact_line::{angle, param, ExactLine};
 use super::params::{line_hit_params, ClosedFrame, Ellipse2, Param};
 use super::{intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact};
 use super::{ConicCut, ConicHit, LineCut, LineHit, QuadricForm, TorusData};
@@ -23,20 +24,13 @@ use crate::curve::analytic::Shape as CurveShape;
 use crate::curve::{AnyCurve2, Curve};
 use crate::error::GeomError;
 use crate::num::round::round_rational;
-use crate::num::{Interval, Real};
+use crate::num::Interval;
 use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
 use crate::ops::closed_surface::is_closed_shell;
 use crate::ops::rational::rounding::PRECISION_CAP;
 use crate::ops::shape::{Linear, LinearObject, Shape};
 use crate::surface::frame::Frame;
 use crate::surface::AnySurface;
-
-/// An exact line `o + t·d` with the parameter range it is restricted to.
-pub(super) struct ExactLine<const D: usize> {
-    pub(super) o: [Rational; D],
-    pub(super) d: [Rational; D],
-    pub(super) range: Option<[Rational; 2]>,
-}
 
 fn unit() -> [Rational; 2] {
     [Rational::new(), Rational::from(1)]
@@ -115,37 +109,6 @@ pub(super) fn closed(surface: &AnySurface) -> Option<Closed> {
         )),
         _ => None,
     }
-}
-
-/// The angle of `(x, y)` in `[0, 2π)`, enclosed: `atan2` or, near its branch cut on the
-/// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0)` shifted by
-/// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure.
-pub(super) fn angle(y: &Interval, x: &Interval) -> Interval {
-    let pi = x.pi_like();
-    let direct = y.atan2(x);
-    let across = y.neg().atan2(&x.neg()) + pi;
-    if across.width() < direct.width() {
-        across
-    } else if direct.hi() < 0.0 {
-        direct + pi + pi
-    } else {
-        direct
-    }
-}
-
-/// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`; an empty
-/// enclosure (the angle of the origin) stands for the whole circle.
-pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
-    if b.is_empty() {
-        // A point on the axis (a pole): every angle is its parameter.
-        let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
-        return (0.0, [0.0, two_pi.hi()]);
-    }
-    let mut m = b.midpoint();
-    if m < 0.0 {
-        m += 2.0 * std::f64::consts::PI;
-    }
-    (m, [b.lo(), b.hi()])
 }
 
 pub(super) fn point_box<const D: usize>(h: &LineHit<D>) -> [Interval; D] {

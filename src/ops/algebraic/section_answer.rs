@@ -17,8 +17,7 @@
 use rug::Rational;
 
 use super::pairs::{closed, not_correctly_rounded, surface_params, Closed};
-use super::params::line_hit_params;
-use super::three_spheres::frame_of;
+use super::params::{line_hit_params, ClosedFrame};
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::certify::univariate::{real_roots, Polynomial};
 use crate::geom::Plane;
@@ -35,9 +34,9 @@ type V3 = [Rational; 3];
 /// Where a shape's parameters come from.
 pub(crate) enum ParamSource {
     /// A whole closed surface.
-    Closed(Closed),
+    Closed(Box<Closed>),
     /// A parametric plane `o + s·u + t·v` (exact).
-    Plane([V3; 3]),
+    Plane(Box<[V3; 3]>),
     /// No parameters (an implicit plane), or none that can be given.
     None,
 }
@@ -46,13 +45,15 @@ impl ParamSource {
     /// The parameter source of an input shape.
     pub(crate) fn of(shape: &Shape) -> ParamSource {
         match shape {
-            Shape::Surface(s) => closed(s).map_or(ParamSource::None, ParamSource::Closed),
+            Shape::Surface(s) => {
+                closed(s).map_or(ParamSource::None, |c| ParamSource::Closed(Box::new(c)))
+            }
             Shape::Linear(l) => match l.exact() {
                 LinearObject::Plane(Plane::Parametric { origin, u, v }) => {
                     let a = |x: &nalgebra::Vector3<Rational>| -> V3 {
                         std::array::from_fn(|i| x[i].clone())
                     };
-                    ParamSource::Plane([a(&origin), a(&u), a(&v)])
+                    ParamSource::Plane(Box::new([a(&origin), a(&u), a(&v)]))
                 }
                 _ => ParamSource::None,
             },
@@ -105,9 +106,7 @@ impl ParamSource {
         match self {
             ParamSource::Closed(c) => surface_params(c, b).iter().map(|x| x.0).collect(),
             ParamSource::Plane(f) => {
-                let p: V3 = b
-                    .clone()
-                    .map(|x| Rational::from_f64(x.midpoint()).unwrap_or_default());
+                let p: V3 = b.map(|x| Rational::from_f64(x.midpoint()).unwrap_or_default());
                 plane_params(f, &p).iter().map(|x| x.to_f64()).collect()
             }
             ParamSource::None => vec![],
@@ -257,7 +256,7 @@ fn midpoint_and_bound(b: &[Interval; 3]) -> ([f64; 3], f64) {
         let d = (mi - Interval::point(x.lo()))
             .hi()
             .max((Interval::point(x.hi()) - mi).hi());
-        sq = sq + Interval::point(d).sqr();
+        sq += Interval::point(d).sqr();
     }
     (m, sq.sqrt().hi())
 }
@@ -285,4 +284,20 @@ pub(crate) fn sampled_answer(
     out.bits = 53;
     out.reason = None;
     Some(out)
+}
+
+/// The frame that inverts a closed surface's parametrisation.
+pub(super) fn frame_of(c: &Closed) -> ClosedFrame<'_> {
+    match c {
+        Closed::Quadric(_, f, r) => ClosedFrame {
+            frame: f,
+            scale: *r,
+            major: None,
+        },
+        Closed::Torus(_, f, major) => ClosedFrame {
+            frame: f,
+            scale: [1.0; 3],
+            major: Some(*major),
+        },
+    }
 }

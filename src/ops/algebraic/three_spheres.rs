@@ -27,8 +27,8 @@ use std::cmp::Ordering;
 use super::line::LineCut;
 use super::on_surface::cross;
 use super::pairs::{closed, not_correctly_rounded, point_box, surface_params, Closed};
-use super::params::{line_hit_params, ClosedFrame};
-use super::section_answer::{section_point, touching_point, ParamSource};
+use super::params::line_hit_params;
+use super::section_answer::{frame_of, section_point, touching_point, ParamSource};
 use super::{intersect_line_quadric_exact, QuadricForm};
 use crate::certificate::{Arithmetic, Certified};
 use crate::ops::answer::{Answer, ExactPoint, Point};
@@ -84,7 +84,7 @@ fn section(s: [&AnySurface; 3], f: &QuadricForm<3>, n: V3, h: Rational) -> Certi
             let bits = conic_answer(cut).bits;
             let shapes: Vec<ParamSource> = s
                 .iter()
-                .map(|x| closed(x).map_or(ParamSource::None, ParamSource::Closed))
+                .map(|x| closed(x).map_or(ParamSource::None, |c| ParamSource::Closed(Box::new(c))))
                 .collect();
             touching_point(&p, &shapes, bits)
         }
@@ -129,21 +129,6 @@ pub(crate) fn intersect_three_spheres(s: [&AnySurface; 3]) -> Option<Certified<A
         std::array::from_fn(|i| (Rational::from(&h2 * &a[i]) + Rational::from(&h3 * &b[i])) / &mm);
     let cut = intersect_line_quadric_exact(&o, &m, forms[0]);
     Some(points(&shapes, &o, &m, cut))
-}
-
-pub(super) fn frame_of(c: &Closed) -> ClosedFrame<'_> {
-    match c {
-        Closed::Quadric(_, f, r) => ClosedFrame {
-            frame: f,
-            scale: *r,
-            major: None,
-        },
-        Closed::Torus(_, f, major) => ClosedFrame {
-            frame: f,
-            scale: [1.0; 3],
-            major: Some(*major),
-        },
-    }
 }
 
 /// The points of the line `o + s·m` on the spheres, with every sphere's `(u, v)`.

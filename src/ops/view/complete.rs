@@ -14,8 +14,8 @@
 //! all of the contour.
 
 use super::chain::{Chains, Piece};
-use super::contour::ContourCurve;
 use super::system::{CriticalSystem, EdgeSystem};
+use super::types::ContourCurve;
 use crate::certificate::Status;
 use crate::certify::{solve, Options, Solutions};
 use crate::error::GeomError;

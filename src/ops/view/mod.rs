@@ -25,6 +25,7 @@ mod front;
 mod projection;
 mod system;
 mod trace;
+mod types;
 mod visibility;
 
 pub use contour::{

@@ -1,0 +1,45 @@
+//! The exact line of the algebraic pairs and the enclosed angle parameters of their
+//! closed surfaces (OPERATIONS.md §1.6, §5.2): below `pairs` and `apex_line`, which both
+//! use them.
+
+use rug::Rational;
+
+use crate::num::{Interval, Real};
+
+/// An exact line `o + t·d` with the parameter range it is restricted to.
+pub(super) struct ExactLine<const D: usize> {
+    pub(super) o: [Rational; D],
+    pub(super) d: [Rational; D],
+    pub(super) range: Option<[Rational; 2]>,
+}
+
+/// The angle of `(x, y)` in `[0, 2π)`, enclosed: `atan2` or, near its branch cut on the
+/// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0)` shifted by
+/// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure.
+pub(super) fn angle(y: &Interval, x: &Interval) -> Interval {
+    let pi = x.pi_like();
+    let direct = y.atan2(x);
+    let across = y.neg().atan2(&x.neg()) + pi;
+    if across.width() < direct.width() {
+        across
+    } else if direct.hi() < 0.0 {
+        direct + pi + pi
+    } else {
+        direct
+    }
+}
+
+/// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`; an empty
+/// enclosure (the angle of the origin) stands for the whole circle.
+pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
+    if b.is_empty() {
+        // A point on the axis (a pole): every angle is its parameter.
+        let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
+        return (0.0, [0.0, two_pi.hi()]);
+    }
+    let mut m = b.midpoint();
+    if m < 0.0 {
+        m += 2.0 * std::f64::consts::PI;
+    }
+    (m, [b.lo(), b.hi()])
+}
