@@ -50,6 +50,11 @@ pub fn contour(
 ///
 /// Errors: shapes that are not parametric surfaces (fields `objects[k]`); those of
 /// [`visibility_point_surface`].
+///
+/// Experimental: its test families (a sphere hiding its back, a second sphere
+/// occluding, §16.14's cylinder) do not pass yet — the §16.14 cylinder ends
+/// `undecided` ("box budget spent") and the sphere families take over a minute — so
+/// they are not in the suite; an `undecided` answer is the honest outcome there.
 pub fn visibility(
     shape: &Shape,
     params: [f64; 2],
