@@ -91,7 +91,7 @@ impl Default for Options {
     }
 }
 
-/// The reason recorded when the deadline has passed (also [`Ledger::spent`]).
+/// The reason recorded when the deadline has passed (also `Ledger::spent`).
 pub const TIME_LIMIT: &str = "time limit reached";
 
 /// Whether `deadline` has passed (one `Instant::now()`; `None` never passes). The

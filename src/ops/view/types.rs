@@ -52,7 +52,7 @@ pub struct ContourCurve {
 }
 
 /// The contour of a surface in a view: its components; `complete` (in the enclosing
-/// [`Certified`]) when it is proven that there is no other.
+/// [`crate::certificate::Certified`]) when it is proven that there is no other.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Contour {
     pub curves: Vec<ContourCurve>,

@@ -3,7 +3,7 @@
 //! circle ∩ sphere) swept over gaps `10⁻³ … 10⁻¹⁵`, ±1 ulp and exact tangency, each run
 //! through geocert's float path (the `_f64` solvers seeded by the walks of
 //! OPERATIONS.md §2, no proof) and through the certified front door
-//! ([`crate::ops::intersect`]), against a truth computed independently
+//! ([`crate::ops::intersect()`]), against a truth computed independently
 //! ([`truth`]: exact rational root counts, points at 300 bits).
 //!
 //! Every configuration is built from dyadic data (multiples of 2⁻²⁰ with few bits and

@@ -2,7 +2,7 @@
 //! - the float path: the `_f64` solvers ([`intersect_curve_surface_f64`],
 //!   [`intersect_curve_curve_f64`]) seeded by the float walks of OPERATIONS.md §2, as the
 //!   front door seeds them (no proof);
-//! - the certified front door [`crate::ops::intersect`].
+//! - the certified front door [`crate::ops::intersect()`].
 
 use nalgebra::Vector3;
 use rug::Float;
