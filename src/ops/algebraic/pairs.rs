@@ -350,18 +350,7 @@ pub(super) fn line_surface_exact(
         Closed::Quadric(q, _, _) => intersect_line_quadric_exact(&line.o, &line.d, q),
         Closed::Torus(t, _, _) => intersect_line_torus_exact(&line.o, &line.d, t),
     };
-    let frame = match &shape {
-        Closed::Quadric(_, f, r) => ClosedFrame {
-            frame: f,
-            scale: *r,
-            major: None,
-        },
-        Closed::Torus(_, f, major) => ClosedFrame {
-            frame: f,
-            scale: [1.0; 3],
-            major: Some(*major),
-        },
-    };
+    let frame = frame_of(&shape);
     let params =
         |h: &LineHit<3>, b: &[Interval; 3]| match line_hit_params(&frame, &line.o, &line.d, &h.t) {
             Some(p) => (p, true),
@@ -524,4 +513,20 @@ fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Ce
         not_correctly_rounded(&mut r);
     }
     r
+}
+
+/// The frame that inverts a closed surface's parametrisation.
+pub(super) fn frame_of(c: &Closed) -> ClosedFrame<'_> {
+    match c {
+        Closed::Quadric(_, f, r) => ClosedFrame {
+            frame: f,
+            scale: *r,
+            major: None,
+        },
+        Closed::Torus(_, f, major) => ClosedFrame {
+            frame: f,
+            scale: [1.0; 3],
+            major: Some(*major),
+        },
+    }
 }

@@ -16,8 +16,8 @@
 
 use rug::Rational;
 
-use super::pairs::{closed, not_correctly_rounded, surface_params, Closed};
-use super::params::{line_hit_params, ClosedFrame};
+use super::pairs::{closed, frame_of, not_correctly_rounded, surface_params, Closed};
+use super::params::line_hit_params;
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::certify::univariate::{real_roots, Polynomial};
 use crate::geom::Plane;
@@ -284,20 +284,4 @@ pub(crate) fn sampled_answer(
     out.bits = 53;
     out.reason = None;
     Some(out)
-}
-
-/// The frame that inverts a closed surface's parametrisation.
-pub(super) fn frame_of(c: &Closed) -> ClosedFrame<'_> {
-    match c {
-        Closed::Quadric(_, f, r) => ClosedFrame {
-            frame: f,
-            scale: *r,
-            major: None,
-        },
-        Closed::Torus(_, f, major) => ClosedFrame {
-            frame: f,
-            scale: [1.0; 3],
-            major: Some(*major),
-        },
-    }
 }

@@ -26,9 +26,9 @@ use std::cmp::Ordering;
 
 use super::line::LineCut;
 use super::on_surface::cross;
-use super::pairs::{closed, not_correctly_rounded, point_box, surface_params, Closed};
+use super::pairs::{closed, frame_of, not_correctly_rounded, point_box, surface_params, Closed};
 use super::params::line_hit_params;
-use super::section_answer::{frame_of, section_point, touching_point, ParamSource};
+use super::section_answer::{section_point, touching_point, ParamSource};
 use super::{intersect_line_quadric_exact, QuadricForm};
 use crate::certificate::{Arithmetic, Certified};
 use crate::ops::answer::{Answer, ExactPoint, Point};
