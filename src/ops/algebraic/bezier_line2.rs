@@ -1,4 +1,5 @@
-//! A plane Bézier curve (polynomial or rational, OPERATIONS.md §1.5) against a `line2`
+//! A plane Bézier or NURBS curve (polynomial or rational, OPERATIONS.md §1.5, NURBS piece
+//! by piece through [`super::exact_spline`]) against a `line2`
 //! or `segment2` (§6.3), decided exactly (issue 16; docs/CERTIFICATES.md `exact`).
 //!
 //! The line `o + s·d` is the zero set of `g(x) = d⊥·(x − o)`, `d⊥ = (−d_y, d_x)`; on
@@ -17,44 +18,57 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
-use super::bezier_plane::{bezier_points, ExactBezier};
+use super::bezier_plane::bezier_points;
+use super::exact_spline::{spline_points, ExactBezier, ExactCurve};
 use crate::certificate::{Arithmetic, Certified};
-use crate::curve::bezier::Bezier;
+use crate::certify::univariate::RealRoot;
 use crate::ops::answer::Answer;
 use crate::ops::rational::exact::{dot, sign_at_root};
 
-/// A Bézier curve against the line `o + s·d` (`d ≠ 0`), restricted to `range` if any.
-pub(crate) fn bezier_line2(
-    curve: &Bezier<2>,
+/// A Bézier or NURBS curve (as exact pieces) against the line `o + s·d` (`d ≠ 0`),
+/// restricted to `range` if any.
+pub(crate) fn spline_line2(
+    curve: &ExactCurve,
     o: &[Rational; 2],
     d: &[Rational; 2],
     range: Option<&[Rational; 2]>,
     curve_first: bool,
 ) -> Option<Certified<Answer>> {
-    let c = ExactBezier::new(curve);
     let perp = [-d[1].clone(), d[0].clone()];
-    let g = c.affine(&perp, &-dot(&perp, o));
-    let bits = g.max_bits();
-    if g.is_zero() {
-        if range.is_some() {
-            return None;
-        }
+    let side = |c: &ExactBezier| c.affine(&perp, &-dot(&perp, o));
+    let bits = curve.max_bits(side);
+    let on_line = curve.pieces.iter().filter(|c| side(c).is_zero()).count();
+    if on_line == curve.pieces.len() && range.is_none() {
         let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
         r.reason = Some("the curve lies on the line".into());
         return Some(r);
     }
+    if on_line > 0 {
+        return None;
+    }
     let dd = dot(d, d);
     let unit: [Rational; 2] = std::array::from_fn(|i| Rational::from(&d[i] / &dd));
-    let s = c.affine(&unit, &-dot(&unit, o));
-    let keep = |t: &mut crate::certify::univariate::RealRoot| {
-        let Some([a, b]) = range else {
-            return true;
+    let points = spline_points(curve, curve_first, |c, skip_start| {
+        let s = c.affine(&unit, &-dot(&unit, o));
+        let keep = |t: &mut RealRoot| {
+            let Some([a, b]) = range else {
+                return true;
+            };
+            let above = &s - &c.den.scale(a);
+            let below = &s - &c.den.scale(b);
+            sign_at_root(t, &above) != Ordering::Less
+                && sign_at_root(t, &below) != Ordering::Greater
         };
-        let above = &s - &c.den.scale(a);
-        let below = &s - &c.den.scale(b);
-        sign_at_root(t, &above) != Ordering::Less && sign_at_root(t, &below) != Ordering::Greater
-    };
-    let points = bezier_points(&c, &g, std::slice::from_ref(&s), keep, curve_first)?;
+        let g = side(c);
+        bezier_points(
+            c,
+            &g,
+            std::slice::from_ref(&s),
+            keep,
+            skip_start,
+            curve_first,
+        )
+    })?;
     Some(Certified::exact(
         Answer::from_points(points),
         Arithmetic::Rational,

@@ -1,5 +1,5 @@
-//! A Bézier curve (polynomial or rational, OPERATIONS.md §1.5) against a plane, decided
-//! exactly (issue 16; docs/CERTIFICATES.md `exact`).
+//! A Bézier or NURBS curve (polynomial or rational, OPERATIONS.md §1.5) against a plane,
+//! decided exactly (issue 16; docs/CERTIFICATES.md `exact`).
 //!
 //! With control points `Pᵢ` and weights `wᵢ > 0` (all 1 for a polynomial curve), the
 //! plane's equation `n·x − h` on the curve is `N(t)/W(t)` with
@@ -14,33 +14,18 @@
 //! coordinate that is rational at an irrational root is found exactly when it is so
 //! modulo the root's square-free factor (a constant remainder); any other that the
 //! refinement cannot round within its budget leaves the pair to the numeric certifier
-//! (`None`).
+//! (`None`). A NURBS curve is the same on each knot span, piece by piece
+//! ([`super::exact_spline`]).
 
 use rug::Rational;
 
 use super::conic_plane::ExactPlane;
+use super::exact_spline::{spline_points, ExactBezier, ExactCurve};
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::{real_roots_in, Polynomial, RealRoot};
-use crate::curve::bezier::Bezier;
-use crate::curve::Curve;
 use crate::num::round::{round_rational, Rounded};
 use crate::ops::answer::{Answer, ExactPoint, Point};
 use crate::ops::rational::exact::{dot, round_enclosure, RatInterval};
-
-/// `Σ cᵢ Bᵢⁿ(t)` in the power basis, exactly.
-fn bernstein(c: &[Rational]) -> Polynomial {
-    let n = c.len() - 1;
-    let t = Polynomial::x();
-    let one_minus_t = Polynomial::from_coeffs(vec![Rational::from(1), Rational::from(-1)]);
-    let mut sum = Polynomial::zero();
-    let mut binom = rug::Integer::from(1);
-    for (i, ci) in c.iter().enumerate() {
-        let b = &t.pow(i as u32) * &one_minus_t.pow((n - i) as u32);
-        sum = &sum + &b.scale(&(Rational::from(&binom) * ci));
-        binom = binom * (n - i) as u32 / (i as u32 + 1);
-    }
-    sum
-}
 
 /// How many refinements a coordinate's rounding may take before giving up.
 const REFINE_BUDGET: usize = 4000;
@@ -67,11 +52,21 @@ fn round_at(
         }
     }
     let mut t = t.clone();
+    let mut tried: Option<Rational> = None;
     for _ in 0..REFINE_BUDGET {
         let x = RatInterval::from_root(&t);
         if let Some(q) = x.eval(num).div(&x.eval(den)) {
             if let Some(r) = round_enclosure(&q) {
                 return Some((r, None));
+            }
+            // An enclosure that keeps straddling one double may be converging onto it:
+            // the value is that double exactly when `t` is a root of `num − d·den`
+            // (decided exactly); otherwise refinement moves the enclosure off it.
+            if let Some(d) = straddled_double(&q).filter(|d| tried.as_ref() != Some(d)) {
+                if t.is_root_of(&(num - &den.scale(&d))) {
+                    return Some((round_rational(&d), Some(d)));
+                }
+                tried = Some(d);
             }
         }
         t.refine();
@@ -79,63 +74,37 @@ fn round_at(
     None
 }
 
-/// A Bézier curve with its exact data: `X(t) = nums(t)/den(t)` in the power basis,
-/// `den = Σ wᵢBᵢⁿ > 0` (OPERATIONS.md §1.5), the domain's double ends as rationals.
-pub(super) struct ExactBezier {
-    pub(super) den: Polynomial,
-    pub(super) nums: Vec<Polynomial>,
-    pub(super) domain: (Rational, Rational),
-}
-
-impl ExactBezier {
-    pub(super) fn new<const D: usize>(curve: &Bezier<D>) -> ExactBezier {
-        let q = |v: f64| Rational::from_f64(v).unwrap_or_default();
-        let pts: Vec<[Rational; D]> = curve.points().iter().map(|p| p.map(q)).collect();
-        let w: Vec<Rational> = match curve.weights() {
-            Some(w) => w.iter().map(|&x| q(x)).collect(),
-            None => vec![Rational::from(1); pts.len()],
-        };
-        let nums = (0..D)
-            .map(|k| {
-                let c: Vec<Rational> = pts
-                    .iter()
-                    .zip(&w)
-                    .map(|(p, wi)| Rational::from(&p[k] * wi))
-                    .collect();
-                bernstein(&c)
-            })
-            .collect();
-        let (lo, hi) = curve.domain();
-        ExactBezier {
-            den: bernstein(&w),
-            nums,
-            domain: (q(lo), q(hi)),
-        }
+/// The double both ends of `q` round to, when it lies inside `q`.
+fn straddled_double(q: &RatInterval) -> Option<Rational> {
+    let (a, b) = (round_rational(&q.lo), round_rational(&q.hi));
+    if a.nearest.to_bits() != b.nearest.to_bits() || a.overflowed() {
+        return None;
     }
-
-    /// `W(t)·(a·X(t) + c)`: an affine function of the point, times the denominator.
-    pub(super) fn affine(&self, a: &[Rational], c: &Rational) -> Polynomial {
-        let mut p = self.den.scale(c);
-        for (num, ak) in self.nums.iter().zip(a) {
-            p = &p + &num.scale(ak);
-        }
-        p
-    }
+    let d = Rational::from_f64(a.nearest)?;
+    (q.lo <= d && d <= q.hi).then_some(d)
 }
 
 /// The points of the curve at the roots of `n` in its domain that `keep` accepts, the
 /// other object's parameters `flat_nums/den` (correctly rounded like the coordinates);
-/// `None` when a number cannot be rounded within the budget.
+/// `None` when a number cannot be rounded within the budget. With `skip_start` a root
+/// at the domain's lower end is left out and its multiplicity returned (the piece on
+/// the left reports it, [`super::exact_spline::spline_points`]).
 pub(super) fn bezier_points(
     c: &ExactBezier,
     n: &Polynomial,
     flat_nums: &[Polynomial],
     mut keep: impl FnMut(&mut RealRoot) -> bool,
+    skip_start: bool,
     curve_first: bool,
-) -> Option<Vec<Point>> {
+) -> Option<(Vec<Point>, Option<u32>)> {
     let roots = real_roots_in(n, &c.domain.0, &c.domain.1).ok()?;
     let mut points = Vec::new();
+    let mut start = None;
     for mut t in roots {
+        if skip_start && t.exact() == Some(&c.domain.0) {
+            start = keep(&mut t).then(|| t.multiplicity());
+            continue;
+        }
         if !keep(&mut t) {
             continue;
         }
@@ -190,43 +159,59 @@ pub(super) fn bezier_points(
             ..Default::default()
         });
     }
-    Some(points)
+    Some((points, start))
 }
 
-/// A Bézier curve against a plane, exactly; `None` when a coordinate cannot be rounded
-/// within the budget.
-pub(crate) fn bezier_plane(
-    curve: &Bezier<3>,
+/// A Bézier or NURBS curve (as exact pieces, [`ExactCurve`]) against a plane, exactly;
+/// `None` when a coordinate cannot be rounded within the budget, or when the curve lies
+/// in the plane on some pieces only (left to the numeric certifier).
+pub(crate) fn spline_plane(
+    curve: &ExactCurve,
     plane: &ExactPlane,
     curve_first: bool,
 ) -> Option<Certified<Answer>> {
-    let c = ExactBezier::new(curve);
-    let n = c.affine(&plane.n, &-plane.h.clone());
-    let bits = n.max_bits();
-    if n.is_zero() {
+    let height = |c: &ExactBezier| c.affine(&plane.n, &-plane.h.clone());
+    let bits = curve.max_bits(height);
+    let flat = curve.pieces.iter().filter(|c| height(c).is_zero()).count();
+    if flat == curve.pieces.len() {
         let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
         r.reason = Some("the curve lies in the plane".into());
         return Some(r);
     }
-    // A parametric plane's (a, b) = (A·(x − o), B·(x − o)), A, B from its Gram system.
-    let plane_nums: Vec<Polynomial> = match &plane.frame {
-        Some([o, u, v]) => {
-            let (uu, uv, vv) = (dot(u, u), dot(u, v), dot(v, v));
-            let det = Rational::from(&uu * &vv) - Rational::from(&uv * &uv);
-            let comb = |c1: &Rational, e1: &[Rational; 3], c2: &Rational, e2: &[Rational; 3]| {
-                let g: [Rational; 3] = std::array::from_fn(|i| {
-                    (Rational::from(c1 * &e1[i]) - Rational::from(c2 * &e2[i])) / &det
-                });
-                c.affine(&g, &-dot(&g, o))
-            };
-            vec![comb(&vv, u, &uv, v), comb(&uu, v, &uv, u)]
-        }
-        None => Vec::new(),
-    };
-    let points = bezier_points(&c, &n, &plane_nums, |_| true, curve_first)?;
+    if flat > 0 {
+        return None;
+    }
+    let points = spline_points(curve, curve_first, |c, skip_start| {
+        let plane_nums = plane_params(c, plane);
+        bezier_points(
+            c,
+            &height(c),
+            &plane_nums,
+            |_| true,
+            skip_start,
+            curve_first,
+        )
+    })?;
     Some(Certified::exact(
         Answer::from_points(points),
         Arithmetic::Rational,
         bits,
     ))
+}
+
+/// A parametric plane's `(a, b) = (A·(x − o), B·(x − o))` on the piece, times its
+/// denominator, with `A`, `B` from the plane's Gram system; none for an implicit plane.
+fn plane_params(c: &ExactBezier, plane: &ExactPlane) -> Vec<Polynomial> {
+    let Some([o, u, v]) = &plane.frame else {
+        return Vec::new();
+    };
+    let (uu, uv, vv) = (dot(u, u), dot(u, v), dot(v, v));
+    let det = Rational::from(&uu * &vv) - Rational::from(&uv * &uv);
+    let comb = |c1: &Rational, e1: &[Rational; 3], c2: &Rational, e2: &[Rational; 3]| {
+        let g: [Rational; 3] = std::array::from_fn(|i| {
+            (Rational::from(c1 * &e1[i]) - Rational::from(c2 * &e2[i])) / &det
+        });
+        c.affine(&g, &-dot(&g, o))
+    };
+    vec![comb(&vv, u, &uv, v), comb(&uu, v, &uv, u)]
 }

@@ -24,6 +24,7 @@ mod conic_plane;
 pub(crate) mod curve_on_surface;
 pub(crate) mod curve_quadric;
 mod exact_line;
+mod exact_spline;
 mod foot2;
 mod kquad;
 mod line;

@@ -15,6 +15,7 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 pub(super) use super::exact_line::{angle, param, ExactLine};
+use super::exact_spline::ExactCurve;
 use super::params::{line_hit_params, ClosedFrame, Ellipse2, Param};
 use super::{intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact};
 use super::{ConicCut, ConicHit, LineCut, LineHit, QuadricForm, TorusData};
@@ -372,7 +373,10 @@ pub(crate) fn curve_plane(
             super::conic_plane::conic_plane(c, &plane, curve_first)
         }
         crate::curve::AnyCurve3::Bezier(b) => {
-            super::bezier_plane::bezier_plane(b, &plane, curve_first)
+            super::bezier_plane::spline_plane(&ExactCurve::bezier(b), &plane, curve_first)
+        }
+        crate::curve::AnyCurve3::Nurbs(b) => {
+            super::bezier_plane::spline_plane(&ExactCurve::nurbs(b), &plane, curve_first)
         }
         _ => None,
     }
@@ -465,15 +469,20 @@ pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer
     Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_answer(&ca, &cb, cut)))
 }
 
-/// A 2D line or segment against a Bézier curve, in either order
+/// A 2D line or segment against a Bézier or NURBS curve, in either order
 /// ([`super::bezier_line2`]); `None` for other pairs or when not decided exactly.
 fn bezier_line(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
+    let exact = |c: &AnyCurve2| match c {
+        AnyCurve2::Bezier(c) => Some(ExactCurve::bezier(c)),
+        AnyCurve2::Nurbs(c) => Some(ExactCurve::nurbs(c)),
+        _ => None,
+    };
     let (line, curve, curve_first) = match (a, b) {
-        (Shape::Curve2(AnyCurve2::Bezier(c)), l) => (line2(l)?, c, true),
-        (l, Shape::Curve2(AnyCurve2::Bezier(c))) => (line2(l)?, c, false),
+        (Shape::Curve2(c), l) => (line2(l)?, exact(c)?, true),
+        (l, Shape::Curve2(c)) => (line2(l)?, exact(c)?, false),
         _ => return None,
     };
-    super::bezier_line2::bezier_line2(curve, &line.o, &line.d, line.range.as_ref(), curve_first)
+    super::bezier_line2::spline_line2(&curve, &line.o, &line.d, line.range.as_ref(), curve_first)
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {
