@@ -328,12 +328,6 @@ fn nurbs_copies_of_bezier_curves_meet_lines_exactly_as_the_bezier() {
         ];
         for (j, copy) in copies.iter().enumerate() {
             if let Some(line) = line_for(&mut rng, copy, (i + j) % 3) {
-                if std::env::var("NE_DEBUG").is_ok() {
-                    eprintln!(
-                        "case {i}.{j}: {:?} {:?} {line:?}",
-                        copy.bezier, copy.weights
-                    );
-                }
                 check(copy, line, curve2, &mut stats, &format!("case {i}.{j}"));
             }
         }
