@@ -4,7 +4,8 @@
 #   fuzz/fuzz.sh build                 # instrumented build of every target
 #   fuzz/fuzz.sh run TARGET [SECONDS]  # fuzz TARGET (default 600 s) from its corpus
 #   fuzz/fuzz.sh merge TARGET DIR      # add DIR's new coverage to fuzz/corpus/TARGET
-# Findings (crashes, timeouts, out-of-memory) land in fuzz/artifacts/TARGET/.
+# Findings (crashes, timeouts, out-of-memory) land in fuzz/artifacts/TARGET/; the run
+# goes on after one (libFuzzer's fork mode), so one finding does not end a campaign.
 # No nightly: coverage comes from LLVM's SanitizerCoverage pass, asked for with
 # stable `-C passes`/`-C llvm-args` flags; no AddressSanitizer (it needs -Zsanitizer),
 # which safe Rust does not need. An explicit --target keeps the flags off build scripts.
@@ -25,6 +26,7 @@ case "${1:-}" in
     len=4096; [ "$t" = json_lines ] && len=16384
     "$BIN/$t" "$CARGO_TARGET_DIR/work/$t" "corpus/$t" -max_total_time="$secs" \
       -max_len=$len -timeout=10 -rss_limit_mb=4096 -print_final_stats=1 \
+      -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
       -artifact_prefix="artifacts/$t/" ;;
   merge)
     t=$2

@@ -38,6 +38,10 @@ pub fn record(line: &str) -> Value {
     for p in v["points"].as_array().into_iter().flatten() {
         point(p, line);
     }
+    if let Some(s) = v.get("segment") {
+        point(&s["a"], line);
+        point(&s["b"], line);
+    }
     v
 }
 
@@ -112,4 +116,16 @@ pub fn bounds(p: &Value, line: &str) -> Option<Vec<(f64, f64)>> {
             .map(|iv| (number(&iv[0], line).unwrap(), number(&iv[1], line).unwrap()))
             .collect(),
     )
+}
+
+/// Prints the case when a check (or geocert) panics while it is alive, so that a
+/// finding can be read and replayed as a JSON case.
+pub struct ShowOnPanic<'a>(pub &'a Value);
+
+impl Drop for ShowOnPanic<'_> {
+    fn drop(&mut self) {
+        if std::thread::panicking() {
+            eprintln!("the case: {}", self.0);
+        }
+    }
 }

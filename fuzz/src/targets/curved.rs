@@ -28,6 +28,10 @@ fn run(case: Option<Value>) {
     let Some(case) = case else {
         return;
     };
+    if std::env::var_os("GEOCERT_FUZZ_SHOW").is_some() {
+        eprintln!("case: {case}");
+    }
+    let _shown = check::ShowOnPanic(&case);
     let line = solve_case(parse_case(case.clone())).to_json_line();
     let v = check::record(&line);
     if v["status"] == "error" || v["status"] == "undecided" || v["kind"] != "points" {

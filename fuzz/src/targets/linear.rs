@@ -43,6 +43,8 @@ enum Truth {
     Point(Q3, Option<Rational>),
     /// A line: every point `p` with `n·p + d = 0` for each of these planes.
     Line(Vec<(Q3, Rational)>),
+    /// A segment or a ranged line lying in the plane: its two ends.
+    Segment(Q3, Q3),
     Coincident,
     Empty,
     /// A projection's foot and squared distance.
@@ -169,10 +171,10 @@ fn line_plane(o: &Q3, d: &Q3, range: Option<[Rational; 2]>, n: &Q3, dd: &Rationa
     let nd = dot(n, d);
     let r = dot(n, o) + dd;
     if nd == 0 {
-        return if r == 0 {
-            Truth::Line(vec![(n.clone(), dd.clone())])
-        } else {
-            Truth::Empty
+        return match (r == 0, range) {
+            (false, _) => Truth::Empty,
+            (true, None) => Truth::Line(vec![(n.clone(), dd.clone())]),
+            (true, Some([t0, t1])) => Truth::Segment(at(o, d, &t0), at(o, d, &t1)),
         };
     }
     let t = -r / nd;
@@ -335,7 +337,18 @@ impl Truth {
                     }
                 }
             }
-            Truth::Coincident => assert_eq!(kind, "coincident", "{line}"),
+            Truth::Segment(a, b) => {
+                assert_eq!(kind, "segment", "expected a segment: {line}");
+                let s = &v["segment"];
+                let (pa, pb) = (&s["a"], &s["b"]);
+                let ea = parse_q3(&pa["exact"]["xyz"], line);
+                // Its ends in either order.
+                let (ta, tb) = if &ea == a { (a, b) } else { (b, a) };
+                same_point(pa, ta, line);
+                same_point(pb, tb, line);
+            }
+            // Two equal planes are `coincident`; three, `plane`.
+            Truth::Coincident => assert!(kind == "coincident" || kind == "plane", "{line}"),
             Truth::Empty => assert_eq!(kind, "empty", "expected empty: {line}"),
         }
     }
