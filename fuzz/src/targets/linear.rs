@@ -164,7 +164,7 @@ fn nonzero(d: &Q3) -> Option<()> {
 }
 
 fn at(o: &Q3, d: &Q3, t: &Rational) -> Q3 {
-    std::array::from_fn(|i| Rational::from(&o[i] + Rational::from(&d[i] * t)))
+    std::array::from_fn(|i| &o[i] + Rational::from(&d[i] * t))
 }
 
 fn line_plane(o: &Q3, d: &Q3, range: Option<[Rational; 2]>, n: &Q3, dd: &Rational) -> Truth {
@@ -195,11 +195,11 @@ fn rank(mut rows: Vec<Vec<Rational>>) -> usize {
             continue;
         };
         rows.swap(r, p);
-        for i in r + 1..rows.len() {
-            let f = Rational::from(&rows[i][c] / &rows[r][c]);
-            for j in c..cols {
-                let x = Rational::from(&f * &rows[r][j]);
-                rows[i][j] -= x;
+        let pivot = rows[r].clone();
+        for row in rows.iter_mut().skip(r + 1) {
+            let f = Rational::from(&row[c] / &pivot[c]);
+            for (x, p) in row[c..].iter_mut().zip(&pivot[c..]) {
+                *x -= Rational::from(&f * p);
             }
         }
         r += 1;
@@ -246,7 +246,7 @@ fn foot_plane(p: &Q3, n: &Q3, d: &Rational) -> Truth {
     let r = dot(n, p) + d;
     let nn = dot(n, n);
     let s = Rational::from(&r / &nn);
-    let foot = std::array::from_fn(|i| Rational::from(&p[i] - Rational::from(&s * &n[i])));
+    let foot = std::array::from_fn(|i| &p[i] - Rational::from(&s * &n[i]));
     Truth::Foot(foot, Rational::from(&r * &r) / nn, None)
 }
 

@@ -24,8 +24,11 @@ pub use curved::{curve_curve, curve_surface, project, surface_surface};
 pub use json::json_lines;
 pub use linear::linear;
 
+/// A fuzz target: it panics when a check fails.
+pub type Target = fn(&[u8]);
+
 /// Every target by name: the directory of its corpus under `fuzz/corpus/`.
-pub const TARGETS: &[(&str, fn(&[u8]))] = &[
+pub const TARGETS: &[(&str, Target)] = &[
     ("json_lines", json_lines),
     ("linear", linear),
     ("curve_curve", curve_curve),
