@@ -256,7 +256,7 @@ fn intersecting_spheres_are_one_proven_circle() {
         );
     }
     assert!(checked > 1000);
-    assert_rate(proven, 60, 85, "sphere ∩ sphere");
+    assert_rate(proven, 60, 95, "sphere ∩ sphere");
 }
 
 #[test]

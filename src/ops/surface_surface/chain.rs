@@ -206,8 +206,61 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
         }
         let mid = self.curve_point_between(a, b, j)?;
         let mut first = self.segment(a, &mid, forced, depth + 1)?;
-        first.extend(self.segment(&mid, b, None, depth + 1)?);
+        let second = self.segment(&mid, b, None, depth + 1)?;
+        let second = match first.last() {
+            Some(p) => self.rejoined(p, second, &mid, b, depth + 1),
+            None => second,
+        };
+        first.extend(second);
         Some(first)
+    }
+
+    /// The pieces `next` of the segment `a → b` that follows the piece `prev`, or, when
+    /// they are not proven to join, the segment proven again over `prev`'s fixed
+    /// parameter with its slab starting exactly at `a` (the shared curve point): then
+    /// `a`'s value lies inside `prev`'s slab (which overlaps beyond it) and `prev`'s exit
+    /// face inside the new slab, so the join fails no more because the two slabs run
+    /// over different parameters or are of very different lengths (the cause of loops
+    /// left undecided by "pieces k and k+1 are not proven to join"). The join itself is
+    /// still checked by the caller; this only chooses the boxes.
+    fn rejoined(
+        &self,
+        prev: &Piece,
+        next: Vec<Piece>,
+        a: &[f64; 4],
+        b: &[f64; 4],
+        depth: usize,
+    ) -> Vec<Piece> {
+        if next.first().is_none_or(|q| self.joined(prev, q)) {
+            return next;
+        }
+        match self.segment(a, b, Some(prev.fixed()), depth) {
+            Some(s) if s.first().is_some_and(|q| self.joined(prev, q)) => s,
+            _ => next,
+        }
+    }
+
+    /// A closed chain whose last piece does not join its first: the first segment
+    /// (`pieces[..count]`, from `xs[0]` to `xs[1]`) proven again over the last piece's
+    /// fixed parameter, starting exactly at `xs[0]` ([`Self::rejoined`]), if both of its
+    /// joins then hold.
+    fn reclosed(&self, pieces: &mut Vec<Piece>, count: usize, xs: &[[f64; 4]]) {
+        let (Some(last), Some(first)) = (pieces.last(), pieces.first()) else {
+            return;
+        };
+        if count == 0 || count >= pieces.len() || self.joined(last, first) {
+            return;
+        }
+        // xs[0] in the last piece's unwrapped coordinates is xs[n − 1]; the first segment
+        // is proven where it is, joins compare boxes shifted by whole periods
+        let Some(s) = self.segment(&xs[0], &xs[1], Some(last.fixed()), 0) else {
+            return;
+        };
+        let ok = s.first().is_some_and(|q| self.joined(last, q))
+            && s.last().is_some_and(|q| self.joined(q, &pieces[count]));
+        if ok {
+            pieces.splice(0..count, s);
+        }
     }
 
     /// The curve point with `x_j` halfway between `a_j` and `b_j` (Newton on (9.6) from
@@ -405,12 +458,15 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
             back.reverse();
             pieces.extend(back.into_iter().map(Piece::reversed));
         }
+        // the pieces up to the end of the first segment (a closed chain may redo them)
+        let mut first_count = 0;
         for w in first..last {
             let forced = match (w, start) {
                 (0, Some(Anchor::Face(k, _))) => Some(k),
                 _ => None,
             };
-            let seg = if w + 1 == n - 1 && matches!(end, Some(Anchor::Face(..))) {
+            let face_end = w + 1 == n - 1 && matches!(end, Some(Anchor::Face(..)));
+            let seg = if face_end {
                 let Some(Anchor::Face(k, _)) = end else {
                     unreachable!()
                 };
@@ -422,7 +478,18 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
             } else {
                 self.segment(&xs[w], &xs[w + 1], forced, 0)
             };
-            pieces.extend(seg.ok_or_else(|| format!("no proof between points {w} and {}", w + 1))?);
+            let seg = seg.ok_or_else(|| format!("no proof between points {w} and {}", w + 1))?;
+            let seg = match pieces.last() {
+                Some(p) if !face_end => self.rejoined(p, seg, &xs[w], &xs[w + 1], 0),
+                _ => seg,
+            };
+            pieces.extend(seg);
+            if w == first {
+                first_count = pieces.len();
+            }
+        }
+        if start.is_none() && end.is_none() {
+            self.reclosed(&mut pieces, first_count, xs);
         }
         if let Some(Anchor::Singular(i)) = end {
             let ahead = self

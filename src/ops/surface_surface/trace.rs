@@ -72,6 +72,7 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
         let p0 = space_point(pair, &start);
         let mut points = vec![(start, None)];
         let mut frame = LocalFrame::at(pair, start, sigma, None);
+        let t0 = frame.tangent;
         if frame.sin.partial_cmp(&sin_sw).is_none_or(|o| o.is_lt()) {
             return Direction {
                 points,
@@ -87,7 +88,7 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
             }
             let mut h = step_length(pair, &frame);
             if points.len() >= 3 && closes(pair, &frame, &p0, &start, h) {
-                points.push((start, None));
+                close_at_start(pair, &mut points, &p0, start);
                 return Direction {
                     points,
                     end: CurveEnd::Closed,
@@ -130,6 +131,14 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
                 }
             }
             remove_covered(pair, starts, &frame, &next);
+            if points.len() >= 3 && passes_start(pair, &frame, &next, (&p0, &t0), &start) {
+                // §9.4 "Closure" when the step jumped over the start: it ends there
+                close_at_start(pair, &mut points, &p0, start);
+                return Direction {
+                    points,
+                    end: CurveEnd::Closed,
+                };
+            }
             points.push((y, None));
             frame = next;
         }
@@ -286,7 +295,8 @@ fn acceptable<R: Surface, S: Surface>(
 }
 
 /// §9.4 "Closure": after at least two steps, the start lies within the next step ahead
-/// (`|p₀ − p_k| ≤ h`, `(p₀ − p_k)·t > 0`, nearly along `t`), and its parameters are near.
+/// (`|p₀ − p_k| ≤ h`, `(p₀ − p_k)·t > 0`, nearly along `t`) or within a sliver of `h`
+/// in any direction, and its parameters are near.
 fn closes<R: Surface, S: Surface>(
     pair: &Pair<'_, R, S>,
     frame: &LocalFrame,
@@ -296,12 +306,76 @@ fn closes<R: Surface, S: Surface>(
 ) -> bool {
     let d = sub(p0, &frame.point());
     let dist = norm_f64(&d);
-    if dist > h || dot(&d, &frame.tangent) < 0.9 * dist {
+    // a point within a sliver of the start closes whatever the direction (rounding may
+    // put it just behind the start; marching on would go round the loop again)
+    let behind = dot(&d, &frame.tangent) < 0.9 * dist;
+    if dist > h || (behind && dist > CLOSING_SLIVER * h) {
         return false;
     }
     let allowed = allowed_steps(pair, &frame.x);
     (0..4).all(|k| pair.param_distance(k, frame.x[k], x0[k]) <= 2.0 * allowed[k])
 }
+
+/// The step `a → b` passed the start `p0` (impl, §9.4 "Closure"): `p0` projects into
+/// the chord, lies within a few chord tolerances of it, the chord runs along the start's
+/// tangent `t0` (not a branch crossing there), and its parameters are near. The
+/// check before each step ([`closes`]) misses this when a step accepted up to `2h`
+/// (§9.3) carries the march past the start, which then lies behind the new point; the
+/// march would go round the loop again until its point budget is spent.
+fn passes_start<R: Surface, S: Surface>(
+    pair: &Pair<'_, R, S>,
+    a: &LocalFrame,
+    b: &LocalFrame,
+    (p0, t0): (&[f64; 3], &[f64; 3]),
+    x0: &[f64; 4],
+) -> bool {
+    let (pa, pb) = (a.point(), b.point());
+    let chord = sub(&pb, &pa);
+    let len2 = dot(&chord, &chord);
+    if len2 <= 0.0 {
+        return false;
+    }
+    let lambda = dot(&sub(p0, &pa), &chord) / len2;
+    if !(0.0..=1.0).contains(&lambda) {
+        return false;
+    }
+    let foot: [f64; 3] = std::array::from_fn(|i| pa[i] + lambda * chord[i]);
+    let tol = 4.0 * chord_tolerance(pair) + pair.delta_len();
+    let aligned = dot(t0, &chord).abs() >= 0.85 * len2.sqrt();
+    if norm_f64(&sub(p0, &foot)) > tol || !aligned {
+        return false;
+    }
+    let allowed = allowed_steps(pair, &a.x);
+    (0..4).all(|k| pair.param_distance(k, a.x[k], x0[k]) <= 2.0 * allowed[k])
+}
+
+/// End a closed march at its start. A last point much nearer the start than its
+/// predecessor is dropped first: the closing chord would be tiny next to the others, and
+/// the certified chain (module doc of `chain`) cannot join a box over a sliver to boxes
+/// many times longer — the loop would stay undecided although it closes.
+fn close_at_start<R, S>(
+    pair: &Pair<'_, R, S>,
+    points: &mut Vec<([f64; 4], Option<usize>)>,
+    p0: &[f64; 3],
+    start: [f64; 4],
+) where
+    R: Surface,
+    S: Surface,
+{
+    let n = points.len();
+    if n >= 4 && points[n - 1].1.is_none() {
+        let last = space_point(pair, &points[n - 1].0);
+        let before = space_point(pair, &points[n - 2].0);
+        let gap = norm_f64(&sub(p0, &last));
+        if gap < CLOSING_SLIVER * norm_f64(&sub(&last, &before)) {
+            points.pop();
+        }
+    }
+    points.push((start, None));
+}
+
+/// A closing chord shorter than this share of the chord before it is merged into it.
+const CLOSING_SLIVER: f64 = 0.25;
 
 /// §9.4 "Boundary": the first non-periodic parameter that leaves its range between `x`
 /// (inside) and `y` is set to its bound and made the fixed parameter; (9.1) is solved for
