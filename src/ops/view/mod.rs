@@ -23,6 +23,7 @@ mod complete;
 mod contour;
 mod front;
 mod projection;
+mod ray;
 mod system;
 mod trace;
 mod types;
