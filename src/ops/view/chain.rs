@@ -254,18 +254,31 @@ impl<S: Surface> Chains<'_, '_, S> {
 
     /// A tight box of the contour point with the vertex's fixed coordinate, from the
     /// piece holding the vertex `x` (unwrapped like the pieces).
+    ///
+    /// The piece proves one contour point `z(t)` in its region over every `t` of its slab.
+    /// A float Newton point `ẑ` at `t = x_j` is proven by epsilon-inflation
+    /// ([`prove_graph`], clipped to the piece's region): `K(Z, t) ⊆ int Z` for a box
+    /// `Z ∋ ẑ` inside the region proves one solution in `Z`, which is then `z(t)` — a
+    /// box a few ulps wide. Only when that fails is the piece's own enclosure contracted
+    /// (`E ← E ∩ K(E, t)`, each `K` holds the point), which from a wide start can stall
+    /// far from the point (the loose torus bounds of issue 17).
     pub fn vertex_box(&self, pieces: &[Piece], x: &[f64; 2]) -> Option<[Interval; 2]> {
-        let p = pieces.iter().find(|p| {
-            let r = p.region();
-            r[0].contains(x[0]) && r[1].contains(x[1])
-        })?;
+        let holding = || {
+            pieces.iter().filter(|p| {
+                let r = p.region();
+                r[0].contains(x[0]) && r[1].contains(x[1])
+            })
+        };
+        if let Some(b) = holding().find_map(|p| self.newton_box(p, x)) {
+            return Some(b);
+        }
+        let p = holding().next()?;
         let j = p.graph.fixed;
         let t = Interval::point(x[j]);
+        let mut b = [t; 2];
         let e = enclose_at(self.f, &p.graph, &t, 3)?;
-        // keep contracting while it helps: E ← E ∩ K(E, t) (each K holds the point)
         let mut z = e[1 - j];
         for _ in 0..40 {
-            let mut b = [t; 2];
             b[1 - j] = z;
             let k = match graph_krawczyk(self.f, &b, j) {
                 Graph::Unique(k) | Graph::Image(k) => k[0],
@@ -277,8 +290,39 @@ impl<S: Surface> Chains<'_, '_, S> {
             }
             z = next;
         }
-        let mut b = [t; 2];
         b[1 - j] = z;
         Some(b)
+    }
+
+    /// The box of [`Chains::vertex_box`] proven around a float Newton point in the piece
+    /// `p` (its region clips the inflation, so the one solution found is the piece's).
+    fn newton_box(&self, p: &Piece, x: &[f64; 2]) -> Option<[Interval; 2]> {
+        let j = p.graph.fixed;
+        let t = Interval::point(x[j]);
+        let z = self.newton_at(x, j)?;
+        let w = 4.0 * f64::EPSILON * z.abs().max(1.0);
+        let start = [Interval::from_bounds(z - w, z + w)];
+        let g = prove_graph(self.f, &t, &start, j, &p.graph.region, 12)?;
+        let mut b = [t; 2];
+        b[1 - j] = g.enclosure[1 - j];
+        Some(b)
+    }
+
+    /// Float Newton in `x_{1−j}` for `I = 0` at `x_j` fixed, from `x` (no proof).
+    fn newton_at(&self, x: &[f64; 2], j: usize) -> Option<f64> {
+        let z = 1 - j;
+        let mut y = *x;
+        for _ in 0..20 {
+            let (v, g) = self.f.with_gradient(&y[0], &y[1]);
+            if g[z] == 0.0 || !v.is_finite() || !g[z].is_finite() {
+                return None;
+            }
+            let step = v / g[z];
+            y[z] -= step;
+            if step.abs() <= 2.0 * f64::EPSILON * y[z].abs().max(1e-300) {
+                break;
+            }
+        }
+        y[z].is_finite().then_some(y[z])
     }
 }

@@ -15,14 +15,16 @@
 //!   answer is then `undecided` with the place named.
 //! * Visibility (§13.5): a point is hidden when the ray from it toward the viewer
 //!   meets the surface (or another given surface) again, proven by the complete solver
-//!   on the ray–surface system; `on_contour` when a contour point is proven within a
-//!   small parameter box around it.
+//!   on `G(P + t·w) = 0` in `t` for surfaces with an implicit form (hits checked on the
+//!   patch) and on the ray–surface system otherwise; `on_contour` when a contour point
+//!   is proven within a small parameter box around it.
 
 mod chain;
 mod complete;
 mod contour;
 mod front;
 mod projection;
+mod ray;
 mod system;
 mod trace;
 mod types;

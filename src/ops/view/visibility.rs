@@ -3,24 +3,30 @@
 //! `P + t·w`, `t > 0`, toward the viewer (`w = d`, or `w = E − P` with `t < 1` for a
 //! central view) meets the surface — or another given surface — again.
 //!
-//! The ray–surface system `P + t·w − s(a, b) = 0` (unknowns `t, a, b`) is solved with
-//! the complete solver ([`crate::certify::solve`]) over `t ∈ [−τ, T]` and the surface's
-//! domain; `P` enters as the interval hull of its enclosure (a family of systems: each
-//! proof holds for every point of the hull, so for the exact `s(u, v)`). `T` is where
-//! the ray leaves the interval bounding box of the surface (no point of the surface lies
-//! beyond). The point itself is the root `(0, u, v)`; `visible` needs it verified (one
-//! root in its box) and every other root proven to have `t < 0`, with nothing
-//! undecided; `hidden` needs a verified root with `t > 0`. A point where `I` (13.10)
-//! is not proven non-zero is reported `on_contour` when a contour point is proven
-//! within a parameter distance of `10⁻⁹` around it.
+//! Per surface, what the ray meets is proven by module `ray`: for a surface with an
+//! implicit form `G`, the univariate `G(P + t·w) = 0` over `t ∈ [−τ, T]` (each root
+//! `t > 0` then checked on the patch with the ray–surface system in a small `t`
+//! interval, unless the patch is the whole closed surface); otherwise, or when that
+//! univariate solve is not complete, the ray–surface system `P + t·w − s(a, b) = 0`
+//! (unknowns `t, a, b`) over `t ∈ [−τ, T]` and the surface's domain. Both are solved
+//! with the complete solver ([`crate::certify::solve`]); `P = s(u, v)` is evaluated
+//! inside each system in its number type, so an interval evaluation encloses the exact
+//! point. `T` is where the ray leaves the interval bounding
+//! box of the surface (no point of the surface lies beyond) or the eye. The point
+//! itself is the root `t = 0`; `visible` needs it verified (one root in its box) and
+//! every other root proven to have `t < 0` (or, on the implicit route, proven off the
+//! patch), with nothing undecided; `hidden` needs a verified root with `t > 0` (and
+//! `t < 1` for a central view). A point where `I` (13.10) is not proven non-zero is
+//! reported `on_contour` when a contour point is proven within a parameter distance of
+//! `10⁻⁹` around it.
 
-use super::projection::{Rays, View};
+use super::projection::View;
+use super::ray::{bounding_box, by_implicit, ray_reach, Judged, Ray};
 use super::system::{ContourFn, EdgeSystem};
 use crate::certificate::{Arithmetic, Certified, Status};
-use crate::certify::{solve, Options, Solutions, System};
+use crate::certify::{solve, Options};
 use crate::error::GeomError;
-use crate::num::vector::{add, scale, sub};
-use crate::num::{Interval, Real};
+use crate::num::Interval;
 use crate::ops::surface_surface::SurfaceOperand;
 use crate::surface::Surface;
 
@@ -55,70 +61,6 @@ pub struct VisibilityAnswer {
     /// For `hidden`: the occluding surface (0 = the surface itself, `k` = `others[k−1]`)
     /// and the enclosure `[t, a, b]` of the proven hit.
     pub blocker: Option<(usize, [Interval; 3])>,
-}
-
-/// `P + t·w(P) − s(a, b)` with `P` an interval hull (module doc).
-struct RaySystem<'a, S> {
-    surface: &'a S,
-    p: [[f64; 2]; 3],
-    rays: Rays,
-}
-
-impl<S: Surface> System for RaySystem<'_, S> {
-    fn dim(&self) -> usize {
-        3
-    }
-    fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
-        let p: [T; 3] =
-            std::array::from_fn(|i| x[0].lift(self.p[i][0]).hull_with(&x[0].lift(self.p[i][1])));
-        let w: [T; 3] = match self.rays {
-            Rays::Parallel(d) => d.map(|c| x[0].lift(c)),
-            Rays::Central(e) => sub(&e.map(|c| x[0].lift(c)), &p),
-        };
-        let s = self.surface.jet(&x[1], &x[2], 0).swap_remove(0);
-        sub(&add(&p, &scale(&x[0], &w)), &s).to_vec()
-    }
-}
-
-/// An interval box enclosing the whole surface (16 × 16 interval patches).
-fn bounding_box<S: Surface>(s: &S) -> [Interval; 3] {
-    let (du, dv) = s.domain();
-    let cell = |r: [f64; 2], i: usize| {
-        let w = (r[1] - r[0]) / 16.0;
-        Interval::from_bounds(
-            r[0] + w * i as f64,
-            if i == 15 {
-                r[1]
-            } else {
-                r[0] + w * (i + 1) as f64
-            },
-        )
-        .hull(&Interval::point(r[0] + w * i as f64))
-    };
-    let mut b: Option<[Interval; 3]> = None;
-    for i in 0..16 {
-        for j in 0..16 {
-            let q = s.jet(&cell(du, i), &cell(dv, j), 0).swap_remove(0);
-            b = Some(match b {
-                None => q,
-                Some(b) => std::array::from_fn(|k| b[k].hull(&q[k])),
-            });
-        }
-    }
-    b.unwrap_or([Interval::ENTIRE; 3])
-}
-
-/// The largest `t` at which `P + t·w` can still meet a surface inside `bx`.
-fn ray_reach(bx: &[Interval; 3], p: &[Interval; 3], rays: Rays) -> f64 {
-    match rays {
-        Rays::Parallel(d) => {
-            let w = d.map(Interval::point);
-            let ww = crate::num::vector::dot(&w, &w);
-            let top = (0..3).fold(Interval::point(0.0), |acc, i| acc + (bx[i] - p[i]) * w[i]);
-            (top / ww).hi().max(0.0)
-        }
-        Rays::Central(_) => 1.0,
-    }
 }
 
 /// Visibility of the point `s(params)` of `surface` in `view`, occluded by the surface
@@ -189,7 +131,6 @@ pub fn visibility_point_surface<S: SurfaceOperand>(
             Some(reason.into()),
         ));
     }
-    let p: [[f64; 2]; 3] = p_box.map(|c| [c.lo(), c.hi()]);
     let mut bits = 53;
     let mut undecided = Vec::new();
     let all: Vec<&S> = std::iter::once(surface)
@@ -201,16 +142,23 @@ pub fn visibility_point_surface<S: SurfaceOperand>(
         .fold(0.0, f64::max);
     let tau = (1e-3 * reach).max(1e-6);
     for (k, s) in all.iter().enumerate() {
-        let sys = RaySystem {
-            surface: *s,
-            p,
+        let ray = Ray {
+            origin: surface,
+            at: params,
             rays: view.rays,
+            range: [-tau, reach.max(tau)],
+            own: (k == 0).then_some(params),
         };
-        let (a, b) = s.domain();
-        let sol = solve(&sys, &[[-tau, reach.max(tau)], a, b], opts)?;
-        bits = bits.max(sol.bits);
-        let own = (k == 0).then_some(params);
-        match judge(&sol.value, own) {
+        let quick = match s.implicit_form() {
+            Some(g) => by_implicit(*s, &g, &ray, opts)?,
+            None => None,
+        };
+        let (judged, b) = match quick {
+            Some(j) => j,
+            None => ray.solve_3d(*s, ray.range, opts)?,
+        };
+        bits = bits.max(b);
+        match judged {
             Judged::Hit(r) => {
                 return Ok(certified(
                     answer(Visibility::Hidden, Some((k, r))),
@@ -237,50 +185,6 @@ pub fn visibility_point_surface<S: SurfaceOperand>(
             bits,
             Some(undecided.join("; ")),
         ))
-    }
-}
-
-enum Judged {
-    Hit([Interval; 3]),
-    Clear,
-    Unsure(String),
-}
-
-/// What the roots of one ray system say (module doc); `own`: the point's parameters
-/// when the surface is the point's own.
-fn judge(sol: &Solutions, own: Option<[f64; 2]>) -> Judged {
-    let is_own = |e: &[Interval]| {
-        own.is_some_and(|[u, v]| e[0].contains(0.0) && e[1].contains(u) && e[2].contains(v))
-    };
-    let mut unsure = None;
-    let mut own_found = own.is_none();
-    for r in sol.roots.iter().chain(&sol.boundary_roots) {
-        let e = &r.enclosure;
-        if r.status == Status::Verified && e[0].lo() > 0.0 {
-            return Judged::Hit([e[0], e[1], e[2]]);
-        }
-        if is_own(e) && r.status == Status::Verified {
-            own_found = true;
-        } else if e[0].hi() >= 0.0 {
-            unsure = Some(format!(
-                "a root box at t ∈ [{:e}, {:e}] is {:?}",
-                e[0].lo(),
-                e[0].hi(),
-                r.status
-            ));
-        }
-    }
-    if let Some(u) = sol.undecided.first() {
-        return Judged::Unsure(format!(
-            "{} undecided box(es), first: {}",
-            sol.undecided.len(),
-            u.reason
-        ));
-    }
-    match (unsure, own_found) {
-        (Some(w), _) => Judged::Unsure(w),
-        (None, false) => Judged::Unsure("the point itself is not verified as a ray root".into()),
-        (None, true) => Judged::Clear,
     }
 }
 
