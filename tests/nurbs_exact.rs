@@ -1,14 +1,16 @@
 //! NURBS curves against planes and 2D lines are decided exactly, piece by piece over
 //! their knot spans (issue 16). The truth is the exact Bézier route, which works on the
 //! whole Bernstein form and never sees a knot: every NURBS here is built, exactly in
-//! doubles, as the same point set as a Bézier curve —
+//! doubles, as the same point set as a Bézier curve:
+//!
 //! - one span (`[0^{p+1}, 1^{p+1}]`, polynomial or rational): the same curve, the same
 //!   parameter;
 //! - one knot inserted at ½ by Boehm's rule (every `α = ½`; rational with weights
 //!   alternating 1 and 3, so every new point is dyadic): the same parameter;
 //! - split at ½ by de Casteljau into two pieces joined at a double knot over `[0, 2]`:
-//!   the parameter doubled —
-//! so the two answers must agree in every number: points, boxes, multiplicities,
+//!   the parameter doubled.
+//!
+//! So the two answers must agree in every number: points, boxes, multiplicities,
 //! exact values, and the curve's parameter (doubled where it is). Planes and lines are
 //! random, through the curve's point at ½ (a root on the knot: reported once, by the
 //! piece on its left), or tangent there (a double root on the knot). A closed periodic
@@ -39,11 +41,14 @@ fn coord(rng: &mut Rng) -> f64 {
     rng.int(-16, 16) as f64 / 4.0
 }
 
+/// A NURBS curve's degree, knots, points and weights.
+type Net<const D: usize> = (usize, Vec<f64>, Vec<[f64; D]>, Option<Vec<f64>>);
+
 /// The Bézier curve and its NURBS copy, with how the NURBS parameter relates (×1, ×2).
 struct Copy<const D: usize> {
     bezier: Vec<[f64; D]>,
     weights: Option<Vec<f64>>,
-    nurbs: (usize, Vec<f64>, Vec<[f64; D]>, Option<Vec<f64>>),
+    nurbs: Net<D>,
     scale: u32,
 }
 
@@ -191,7 +196,7 @@ fn check<const D: usize>(
     what: &str,
 ) {
     let opts = Options::default();
-    let curve_first = stats[0] % 2 == 0;
+    let curve_first = stats[0].is_multiple_of(2);
     let pair = |c: Shape| {
         let shapes = if curve_first {
             [c, other.clone()]
@@ -352,7 +357,7 @@ fn a_periodic_curve_cut_through_its_seam_reports_the_seam_once() {
         let mut pts: Vec<[f64; 3]> = (0..n)
             .map(|_| std::array::from_fn(|_| coord(&mut rng)))
             .collect();
-        pts.extend_from_slice(&pts[..p].to_vec());
+        pts.extend_from_within(..p);
         let knots: Vec<f64> = (0..=(n + 2 * p)).map(|k| k as f64).collect();
         let curve = NurbsCurve::new(p, knots, pts.clone(), None, None).expect("nurbs");
         // The seam point: uniform B-spline at a knot, (P₀ + P₁)/2 (p = 2) or

@@ -84,7 +84,7 @@ fn line_through(g: &mut Gen, e: &Ellipse<2>, i: usize) -> ([f64; 2], [f64; 2]) {
             break d;
         }
     };
-    let p = if i % 3 == 0 {
+    let p = if i.is_multiple_of(3) {
         let (p, q) = [(0.0, 1.0), (-1.0, 0.0), (0.0, -1.0)][g.below(3)];
         let mut k = e.net_point(p, q);
         if g.below(3) == 0 {

@@ -374,7 +374,7 @@ fn axial_lines_across_a_nurbs_torus() {
             .collect::<Vec<_>>();
         if params.iter().any(|p: &Vec<Float>| {
             let v = p[1].to_f64();
-            v < 1e-6 || v > 4.0 - 1e-6
+            !(1e-6..=4.0 - 1e-6).contains(&v)
         }) {
             continue;
         }

@@ -18,6 +18,9 @@
 //!   level set `h = 0` (one branch, two branches, a small circle, a touching point).
 //! * Cylinder ∩ sphere where the curve reaches the cylinder's height end.
 
+// Control nets are indexed by row and column.
+#![allow(clippy::needless_range_loop)]
+
 use geocert::num::rng::Rng;
 use geocert::ops::surface_surface::{
     intersect_surface_surface, CurveEnd, Options, SurfaceIntersection,

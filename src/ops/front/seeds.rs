@@ -161,7 +161,7 @@ pub(crate) fn surface_box<S: Surface>(s: &S) -> [Interval; 3] {
         .flat_map(|u| vs.iter().map(move |v| (u, v)))
         .map(|(u, v)| point(u, v))
         .reduce(|a, b| hull(&a, &b));
-    hull.map_or(whole.clone(), |h| meet(h, &whole))
+    hull.map_or(whole, |h| meet(h, &whole))
 }
 
 /// A certified box of a whole curve (pieces as in [`surface_box`]).
@@ -173,7 +173,7 @@ pub(crate) fn curve_box<const D: usize, C: Curve<D>>(c: &C) -> [Interval; D] {
         .iter()
         .map(point)
         .reduce(|a, b| hull(&a, &b));
-    hull.map_or(whole.clone(), |h| meet(h, &whole))
+    hull.map_or(whole, |h| meet(h, &whole))
 }
 
 #[cfg(test)]
