@@ -161,9 +161,7 @@ fn lines_across_a_quarter_bezier_ellipse() {
         } else {
             line_through(&mut g, &e0, 1)
         };
-        if d == [0.0, 0.0]
-            || !runs((d[0] == 0.0 || d[1] == 0.0).then_some("rational_bezier_axis_line"))
-        {
+        if d == [0.0, 0.0] {
             continue;
         }
         let (e, o, d) = (e0.scaled(m), o.map(|x| x * m), d.map(|x| x * m));

@@ -465,9 +465,6 @@ fn verify_nurbs_ellipse_against_lines() {
 
 #[test]
 fn verify_bezier_arc_against_planes() {
-    if !truth_support::runs(Some("verify_bezier_arc_plane_slow")) {
-        return;
-    }
     run_family("bezier arc × plane", 2153, bezier_arc_plane);
 }
 

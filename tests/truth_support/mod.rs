@@ -231,12 +231,6 @@ pub const KNOWN_DEFECTS: &[&str] = &[
     // undecided): project (4.1875, −3.75) onto the circle of radius 2.5 about the
     // origin with A = (1.5, 2), B = (−2, 1.5) (tests/rational_conics.rs).
     "nurbs_turned_circle_projection",
-    // A rational Bézier in the plane against a line parallel to a coordinate axis (the
-    // exact route, src/ops/algebraic/bezier_line2.rs): the crossing's coordinate along
-    // the line's normal is a double exactly, and the answer does not come back (over
-    // 10 s; a polynomial Bézier answers at once): bezier2 (−1.5, 0.375), (−0.75, 0.625),
-    // (−0.5, −1) with weights (1, 1, 2) against the line2 (−1.25, −1.296875) + s(0, 1).
-    "rational_bezier_axis_line",
     // Lines parallel to the axis against the NURBS ring torus of tests/rational_patches.rs
     // (two transversal crossings): the box budget runs out (about 100 undecided boxes)
     // in a third of the cases, e.g. case 5 of `axial_lines_across_a_nurbs_torus`.
@@ -244,12 +238,9 @@ pub const KNOWN_DEFECTS: &[&str] = &[
     // Projection onto the NURBS sphere restricted to v ∈ [1/4, 7/4]: runs over a minute
     // per family without an answer yet (not analysed: time).
     "nurbs_sphere_zone_projection",
-    // tests/verify_rational.rs, not analysed (time): the rational Bézier arc × plane
-    // family runs over a minute (an exact-route case that does not come back, likely
-    // the plane-normal analogue of `rational_bezier_axis_line`), and the projection onto
-    // an axis-aligned NURBS circle in space comes back undecided at the 512-bit cap in
-    // its first case (seed 2157).
-    "verify_bezier_arc_plane_slow",
+    // tests/verify_rational.rs, not analysed (time): the projection onto an
+    // axis-aligned NURBS circle in space comes back undecided at the 512-bit cap in its
+    // first case (seed 2157).
     "verify_nurbs_circle_projection_incomplete",
 ];
 
