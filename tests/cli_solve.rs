@@ -277,8 +277,9 @@ fn demo_status(id: &str) -> &'static str {
             "verified"
         }
         "touching spheres" => "exact",
-        // One of the four branches is not proven to join (OPERATIONS.md §16.12 family).
-        "Steinmetz: crossing cylinders" => "undecided",
+        // Four proven branches through two `verified_singular` crossings (the chain
+        // joins re-proven over the previous box's parameter, issue 15).
+        "Steinmetz: crossing cylinders" => "verified_singular",
         _ => "exact",
     }
 }
