@@ -25,6 +25,7 @@ mod taylor_fast;
 mod tensor;
 pub mod torus;
 pub mod validate;
+pub mod whole_box;
 
 pub use crate::curve::implicit::{Implicit, ImplicitJet};
 pub use any::{AnyImplicit, AnySurface};

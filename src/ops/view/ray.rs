@@ -61,34 +61,6 @@ impl<S: Surface> System for ImplicitRay<'_, '_, S> {
     }
 }
 
-/// An interval box enclosing the whole surface (16 × 16 interval patches).
-pub fn bounding_box<S: Surface>(s: &S) -> [Interval; 3] {
-    let (du, dv) = s.domain();
-    let cell = |r: [f64; 2], i: usize| {
-        let w = (r[1] - r[0]) / 16.0;
-        Interval::from_bounds(
-            r[0] + w * i as f64,
-            if i == 15 {
-                r[1]
-            } else {
-                r[0] + w * (i + 1) as f64
-            },
-        )
-        .hull(&Interval::point(r[0] + w * i as f64))
-    };
-    let mut b: Option<[Interval; 3]> = None;
-    for i in 0..16 {
-        for j in 0..16 {
-            let q = s.jet(&cell(du, i), &cell(dv, j), 0).swap_remove(0);
-            b = Some(match b {
-                None => q,
-                Some(b) => std::array::from_fn(|k| b[k].hull(&q[k])),
-            });
-        }
-    }
-    b.unwrap_or([Interval::ENTIRE; 3])
-}
-
 /// The largest `t` at which `P + t·w` can still meet a surface inside `bx` (central:
 /// the eye, `t = 1`).
 pub fn ray_reach(bx: &[Interval; 3], p: &[Interval; 3], rays: Rays) -> f64 {

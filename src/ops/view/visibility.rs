@@ -21,13 +21,14 @@
 //! `10⁻⁹` around it.
 
 use super::projection::View;
-use super::ray::{bounding_box, by_implicit, ray_reach, Judged, Ray};
+use super::ray::{by_implicit, ray_reach, Judged, Ray};
 use super::system::{ContourFn, EdgeSystem};
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::certify::{solve, Options};
 use crate::error::GeomError;
 use crate::num::Interval;
 use crate::ops::surface_surface::SurfaceOperand;
+use crate::surface::whole_box::surface_box;
 use crate::surface::Surface;
 
 /// The verdict.
@@ -138,7 +139,7 @@ pub fn visibility_point_surface<S: SurfaceOperand>(
         .collect();
     let reach = all
         .iter()
-        .map(|s| ray_reach(&bounding_box(*s), &p_box, view.rays))
+        .map(|s| ray_reach(&surface_box(*s), &p_box, view.rays))
         .fold(0.0, f64::max);
     let tau = (1e-3 * reach).max(1e-6);
     for (k, s) in all.iter().enumerate() {
