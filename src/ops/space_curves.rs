@@ -61,6 +61,7 @@ pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
     let mut left: Vec<[Interval; 2]> = Vec::new();
     let mut boxes = 0usize;
     let mut complete = true;
+    let mut stopped = "the box budget ran out";
     while let Some(x) = stack.pop() {
         boxes += 1;
         if gap(a, b, &x).iter().any(|g| !g.contains_zero()) {
@@ -71,7 +72,12 @@ pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
             left.push(x);
             continue;
         }
-        if boxes >= opts.max_boxes {
+        // The deadline is checked every 64 boxes (issue 20), as the budget is.
+        let late = boxes % 64 == 0 && opts.late();
+        if boxes >= opts.max_boxes || late {
+            if late {
+                stopped = crate::certify::TIME_LIMIT;
+            }
             complete = false;
             left.push(x);
             left.append(&mut stack);
@@ -106,7 +112,7 @@ pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
         arithmetic: Arithmetic::Interval,
         bits: 53,
         reason: if !complete {
-            Some("the box budget ran out before every box was excluded".into())
+            Some(format!("{stopped} before every box was excluded"))
         } else if undecided {
             Some("the curves come within the reported boxes of each other; a gap of exactly zero cannot be proven in floating point".into())
         } else {

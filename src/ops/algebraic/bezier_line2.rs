@@ -33,6 +33,7 @@ pub(crate) fn spline_line2(
     d: &[Rational; 2],
     range: Option<&[Rational; 2]>,
     curve_first: bool,
+    deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let perp = [-d[1].clone(), d[0].clone()];
     let side = |c: &ExactBezier| c.affine(&perp, &-dot(&perp, o));
@@ -67,6 +68,7 @@ pub(crate) fn spline_line2(
             keep,
             skip_start,
             curve_first,
+            deadline,
         )
     })?;
     Some(Certified::exact(

@@ -30,11 +30,14 @@ use crate::ops::rational::exact::{dot, round_enclosure, RatInterval};
 /// How many refinements a coordinate's rounding may take before giving up.
 const REFINE_BUDGET: usize = 4000;
 
-/// `num(t)/den(t)` correctly rounded at the root `t`; `None` past the budget.
+/// `num(t)/den(t)` correctly rounded at the root `t`; `None` past the budget or once
+/// `deadline` has passed (checked per refinement, issue 20: the caller then leaves the
+/// pair to the numeric certifier, which reports the time limit).
 fn round_at(
     t: &RealRoot,
     num: &Polynomial,
     den: &Polynomial,
+    deadline: Option<std::time::Instant>,
 ) -> Option<(Rounded, Option<Rational>)> {
     if let Some(x) = t.exact() {
         let v = num.eval(x) / den.eval(x);
@@ -54,6 +57,9 @@ fn round_at(
     let mut t = t.clone();
     let mut tried: Option<Rational> = None;
     for _ in 0..REFINE_BUDGET {
+        if crate::certify::past(deadline) {
+            return None;
+        }
         let x = RatInterval::from_root(&t);
         if let Some(q) = x.eval(num).div(&x.eval(den)) {
             if let Some(r) = round_enclosure(&q) {
@@ -88,7 +94,8 @@ fn straddled_double(q: &RatInterval) -> Option<Rational> {
 /// other object's parameters `flat_nums/den` (correctly rounded like the coordinates);
 /// `None` when a number cannot be rounded within the budget. With `skip_start` a root
 /// at the domain's lower end is left out and its multiplicity returned (the piece on
-/// the left reports it, [`super::exact_spline::spline_points`]).
+/// the left reports it, [`super::exact_spline::spline_points`]). Rounding stops at
+/// `deadline` ([`round_at`]).
 pub(super) fn bezier_points(
     c: &ExactBezier,
     n: &Polynomial,
@@ -96,6 +103,7 @@ pub(super) fn bezier_points(
     mut keep: impl FnMut(&mut RealRoot) -> bool,
     skip_start: bool,
     curve_first: bool,
+    deadline: Option<std::time::Instant>,
 ) -> Option<(Vec<Point>, Option<u32>)> {
     let roots = real_roots_in(n, &c.domain.0, &c.domain.1).ok()?;
     let mut points = Vec::new();
@@ -111,7 +119,7 @@ pub(super) fn bezier_points(
         let mut xyz = Vec::new();
         let mut exact = Vec::new();
         for num in &c.nums {
-            let (r, e) = round_at(&t, num, &c.den)?;
+            let (r, e) = round_at(&t, num, &c.den, deadline)?;
             xyz.push(r);
             exact.push(e);
         }
@@ -119,7 +127,7 @@ pub(super) fn bezier_points(
         let mut ab = Vec::new();
         let mut ab_exact = Vec::new();
         for num in flat_nums {
-            let (r, e) = round_at(&t, num, &c.den)?;
+            let (r, e) = round_at(&t, num, &c.den, deadline)?;
             ab.push(r);
             ab_exact.push(e);
         }
@@ -164,11 +172,13 @@ pub(super) fn bezier_points(
 
 /// A Bézier or NURBS curve (as exact pieces, [`ExactCurve`]) against a plane, exactly;
 /// `None` when a coordinate cannot be rounded within the budget, or when the curve lies
-/// in the plane on some pieces only (left to the numeric certifier).
+/// in the plane on some pieces only (left to the numeric certifier), or when `deadline`
+/// passes while rounding.
 pub(crate) fn spline_plane(
     curve: &ExactCurve,
     plane: &ExactPlane,
     curve_first: bool,
+    deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let height = |c: &ExactBezier| c.affine(&plane.n, &-plane.h.clone());
     let bits = curve.max_bits(height);
@@ -190,6 +200,7 @@ pub(crate) fn spline_plane(
             |_| true,
             skip_start,
             curve_first,
+            deadline,
         )
     })?;
     Some(Certified::exact(

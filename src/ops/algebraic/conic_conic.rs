@@ -174,6 +174,18 @@ fn find_projection(f1: &Bivariate, f2: &Bivariate, d1: usize, d2: usize) -> Sear
 /// component). Either input may be degenerate (a line pair, a double line, a point,
 /// an empty conic) or of degree 1.
 pub fn intersect_conic_conic(c1: &Conic, c2: &Conic) -> Result<Certified<ConicCut>, GeomError> {
+    intersect_conic_conic_until(c1, c2, None)
+}
+
+/// [`intersect_conic_conic`] that stops refining when `deadline` passes (checked once
+/// per refinement step of the identification, issue 20): then `undecided` with no
+/// points and the reason "time limit reached". Roots of nearly equal conics (an
+/// ellipse with a semi-axis of 1e-82) can need thousands of steps on huge rationals.
+pub fn intersect_conic_conic_until(
+    c1: &Conic,
+    c2: &Conic,
+    deadline: Option<std::time::Instant>,
+) -> Result<Certified<ConicCut>, GeomError> {
     let (f1, f2) = (Bivariate::from_conic(c1), Bivariate::from_conic(c2));
     let (Some(d1), Some(d2)) = (f1.total_degree(), f2.total_degree()) else {
         return Err(GeomError::InvalidValue {
@@ -242,17 +254,22 @@ pub fn intersect_conic_conic(c1: &Conic, c2: &Conic) -> Result<Certified<ConicCu
     let mut ys = real_roots(&py).unwrap_or_default();
     let mut found: Vec<(usize, usize, u32)> = Vec::new();
     for mut xp in roots {
-        match identify(&mut xp, &proj, &mut xs, &mut ys) {
-            Some((i, j)) => found.push((i, j, xp.multiplicity())),
-            None => {
-                return Ok(Certified::undecided(
-                    ConicCut::Points(Vec::new()),
-                    Arithmetic::Rational,
-                    bits,
-                    "a coordinate was not found among the elimination polynomial's roots",
-                ))
+        let reason = match identify(&mut xp, &proj, &mut xs, &mut ys, deadline) {
+            Identified::At(i, j) => {
+                found.push((i, j, xp.multiplicity()));
+                continue;
             }
-        }
+            Identified::Missing => {
+                "a coordinate was not found among the elimination polynomial's roots"
+            }
+            Identified::Late => crate::certify::TIME_LIMIT,
+        };
+        return Ok(Certified::undecided(
+            ConicCut::Points(Vec::new()),
+            Arithmetic::Rational,
+            bits,
+            reason,
+        ));
     }
     found.sort();
     let hits = found
@@ -271,16 +288,30 @@ pub fn intersect_conic_conic(c1: &Conic, c2: &Conic) -> Result<Certified<ConicCu
     ))
 }
 
+/// What [`identify`] found.
+enum Identified {
+    /// The indices into the roots of `P_x` and `P_y`.
+    At(usize, usize),
+    /// No root met, or `MAX_IDENTIFY_STEPS` spent (the algebra excludes both).
+    Missing,
+    /// The deadline passed first.
+    Late,
+}
+
 /// The indices of the roots of `P_x` and `P_y` that are the coordinates of the point
-/// projected to `x'` (step 2 of the module documentation). `None` if the enclosures
-/// meet no root, or after `MAX_IDENTIFY_STEPS` refinements; the algebra excludes both.
+/// projected to `x'` (step 2 of the module documentation), refining until they are
+/// told apart, the step budget is spent or `deadline` passes.
 fn identify(
     xp: &mut RealRoot,
     proj: &Projection,
     xs: &mut [RealRoot],
     ys: &mut [RealRoot],
-) -> Option<(usize, usize)> {
+    deadline: Option<std::time::Instant>,
+) -> Identified {
     for _ in 0..MAX_IDENTIFY_STEPS {
+        if crate::certify::past(deadline) {
+            return Identified::Late;
+        }
         let x_sheared = RatInterval::from_root(xp);
         let (num, den) = proj.ordinate(xp);
         let Some(y) = x_sheared.eval(num).div(&x_sheared.eval(den)) else {
@@ -291,10 +322,10 @@ fn identify(
         let cx: Vec<usize> = meeting(xs, &x);
         let cy: Vec<usize> = meeting(ys, &y);
         if cx.is_empty() || cy.is_empty() {
-            return None;
+            return Identified::Missing;
         }
         if cx.len() == 1 && cy.len() == 1 {
-            return Some((cx[0], cy[0]));
+            return Identified::At(cx[0], cy[0]);
         }
         xp.refine();
         for &i in &cx {
@@ -304,7 +335,7 @@ fn identify(
             ys[j].refine();
         }
     }
-    None
+    Identified::Missing
 }
 
 /// A guard against a logic error turning into an endless loop: each step at least

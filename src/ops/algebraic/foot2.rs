@@ -23,8 +23,9 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
+use super::conic_conic::intersect_conic_conic_until;
 use super::pairs::{not_correctly_rounded, plane_conic, PlaneConic};
-use super::{intersect_conic_conic, ConicCut, ConicHit, QuadricForm};
+use super::{ConicCut, ConicHit, QuadricForm};
 use crate::certificate::Certified;
 use crate::certify::univariate::RealRoot;
 use crate::num::round::{sqrt_rational, Rounded};
@@ -101,11 +102,13 @@ fn nearest_index(hits: &[ConicHit], p: &[Rational; 2]) -> Option<usize> {
 
 /// Every foot of the perpendicular from `p` onto a whole `circle2` or `ellipse2` or a
 /// `conic2`, exactly (or with `nearest` the nearest foot); `None` where the pair is not
-/// one of these or is left to the numeric path (module documentation).
+/// one of these or is left to the numeric path (module documentation). Past `deadline`
+/// the feet are `undecided` ("time limit reached", [`intersect_conic_conic_until`]).
 pub(crate) fn project_point_conic2(
     p: [f64; 2],
     onto: &Shape,
     nearest: bool,
+    deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let conic: PlaneConic = plane_conic(onto)?;
     let pr = [Rational::from_f64(p[0])?, Rational::from_f64(p[1])?];
@@ -113,7 +116,9 @@ pub(crate) fn project_point_conic2(
     if g.iter().all(|x| *x == 0) {
         return None;
     }
-    let cut = intersect_conic_conic(&conic.form, &QuadricForm::conic_exact(g).ok()?).ok()?;
+    let cut =
+        intersect_conic_conic_until(&conic.form, &QuadricForm::conic_exact(g).ok()?, deadline)
+            .ok()?;
     let ConicCut::Points(hits) = &cut.value else {
         // The conic has no component in common with its own Apollonius conic unless it
         // is degenerate (a line pair): left to the numeric path.

@@ -37,7 +37,7 @@ pub(crate) mod section_answer;
 pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};
-pub use conic_conic::{intersect_conic_conic, ConicCut, ConicHit};
+pub use conic_conic::{intersect_conic_conic, intersect_conic_conic_until, ConicCut, ConicHit};
 pub(crate) use foot2::project_point_conic2;
 pub use line::{LineCut, LineHit};
 pub use line_surface::{

@@ -17,7 +17,7 @@ use std::cmp::Ordering;
 pub(super) use super::exact_line::{angle, param, ExactLine};
 use super::exact_spline::ExactCurve;
 use super::params::{line_hit_params, ClosedFrame, Ellipse2, Param};
-use super::{intersect_conic_conic, intersect_line_quadric_exact, intersect_line_torus_exact};
+use super::{intersect_line_quadric_exact, intersect_line_torus_exact};
 use super::{ConicCut, ConicHit, LineCut, LineHit, QuadricForm, TorusData};
 use crate::certificate::{Certified, Status};
 use crate::certify::univariate::RealRoot;
@@ -361,11 +361,13 @@ pub(super) fn line_surface_exact(
 }
 
 /// A space curve against a plane of the linear kernel, exactly where the restriction
-/// is algebraic: the framed conics ([`super::conic_plane`]); `None` for other pairs.
+/// is algebraic: the framed conics ([`super::conic_plane`]); `None` for other pairs,
+/// and for a Bézier or NURBS curve whose rounding is still refining at `deadline`.
 pub(crate) fn curve_plane(
     plane: &Linear,
     curve: &crate::curve::AnyCurve3,
     curve_first: bool,
+    deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let plane = super::conic_plane::exact_plane(plane)?;
     match curve {
@@ -373,10 +375,10 @@ pub(crate) fn curve_plane(
             super::conic_plane::conic_plane(c, &plane, curve_first)
         }
         crate::curve::AnyCurve3::Bezier(b) => {
-            super::bezier_plane::spline_plane(&ExactCurve::bezier(b), &plane, curve_first)
+            super::bezier_plane::spline_plane(&ExactCurve::bezier(b), &plane, curve_first, deadline)
         }
         crate::curve::AnyCurve3::Nurbs(b) => {
-            super::bezier_plane::spline_plane(&ExactCurve::nurbs(b), &plane, curve_first)
+            super::bezier_plane::spline_plane(&ExactCurve::nurbs(b), &plane, curve_first, deadline)
         }
         _ => None,
     }
@@ -450,9 +452,14 @@ pub(super) fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
 }
 
 /// Two plane shapes of which one is a conic and the other a 2D line, segment or
-/// conic; `None` for other pairs.
-pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
-    if let Some(r) = bezier_line(a, b) {
+/// conic; `None` for other pairs. Past `deadline` a Bézier curve is left to the
+/// numeric path and two conics are `undecided` ("time limit reached").
+pub(crate) fn plane_pair(
+    a: &Shape,
+    b: &Shape,
+    deadline: Option<std::time::Instant>,
+) -> Option<Result<Certified<Answer>, GeomError>> {
+    if let Some(r) = bezier_line(a, b, deadline) {
         return Some(Ok(r));
     }
     if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
@@ -466,12 +473,19 @@ pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer
         return Some(Ok(line_cut_answer(&line, cut, params, false)));
     }
     let (ca, cb) = (plane_conic(a)?, plane_conic(b)?);
-    Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_answer(&ca, &cb, cut)))
+    Some(
+        super::conic_conic::intersect_conic_conic_until(&ca.form, &cb.form, deadline)
+            .map(|cut| conics_answer(&ca, &cb, cut)),
+    )
 }
 
 /// A 2D line or segment against a Bézier or NURBS curve, in either order
 /// ([`super::bezier_line2`]); `None` for other pairs or when not decided exactly.
-fn bezier_line(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
+fn bezier_line(
+    a: &Shape,
+    b: &Shape,
+    deadline: Option<std::time::Instant>,
+) -> Option<Certified<Answer>> {
     let exact = |c: &AnyCurve2| match c {
         AnyCurve2::Bezier(c) => Some(ExactCurve::bezier(c)),
         AnyCurve2::Nurbs(c) => Some(ExactCurve::nurbs(c)),
@@ -482,7 +496,14 @@ fn bezier_line(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
         (l, Shape::Curve2(c)) => (line2(l)?, exact(c)?, false),
         _ => return None,
     };
-    super::bezier_line2::spline_line2(&curve, &line.o, &line.d, line.range.as_ref(), curve_first)
+    super::bezier_line2::spline_line2(
+        &curve,
+        &line.o,
+        &line.d,
+        line.range.as_ref(),
+        curve_first,
+        deadline,
+    )
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {

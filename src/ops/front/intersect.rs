@@ -3,7 +3,7 @@
 //! solver where the pair is algebraic, the numeric certifier otherwise.
 
 use super::intersect_curved;
-use crate::certificate::Certified;
+use crate::certificate::{Arithmetic, Certified};
 use crate::error::GeomError;
 use crate::ops::algebraic::curve_on_surface as on_surface;
 use crate::ops::algebraic::curve_quadric::curve_quadric;
@@ -36,8 +36,11 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
         return linear::intersect(&linear, opts);
     }
     if let [a, b] = shapes {
-        if let Some(r) = algebraic(a, b) {
+        if let Some(r) = algebraic(a, b, opts.deadline) {
             return r;
+        }
+        if let Some(r) = identical_curves(a, b) {
+            return Ok(r);
         }
     }
     match shapes {
@@ -50,8 +53,33 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
     }
 }
 
+/// Two curves given by the same numbers (compared exactly as doubles): every point of
+/// one is a point of the other, so the answer is `coincident`, exactly (CERTIFICATION.md
+/// `exact`; docs/FORMAT.md "coincident"). Without this a curve against its copy has a
+/// common point in every box and subdivision runs to its budget (issue 20; a copy with
+/// collapsed control points, all equal, is one point and coincident the same way).
+/// Asked after the exact pairs, which answer identical conics themselves.
+fn identical_curves(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
+    let curves = matches!(
+        (a, b),
+        (Shape::Curve(_), Shape::Curve(_)) | (Shape::Curve2(_), Shape::Curve2(_))
+    );
+    if !curves || a != b {
+        return None;
+    }
+    let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, 53);
+    r.reason = Some("the two curves are identical".into());
+    Some(r)
+}
+
 /// The exact algebraic pairs ([`pairs`]), in either order.
-fn algebraic(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
+/// Past `deadline` the exact rounding loops give up (the numeric path then reports the
+/// time limit) and conic pairs answer `undecided`.
+fn algebraic(
+    a: &Shape,
+    b: &Shape,
+    deadline: Option<std::time::Instant>,
+) -> Option<Result<Certified<Answer>, GeomError>> {
     match (a, b) {
         (Shape::Linear(l), Shape::Surface(s)) => pairs::line_surface(l, s, true)
             .or_else(|| on_surface::line_on_surface(l, s, true))
@@ -65,8 +93,8 @@ fn algebraic(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError
         (Shape::Surface(s), Shape::Curve(c)) => on_surface::curve_on_surface(c, s)
             .or_else(|| curve_quadric(c, s, true))
             .map(Ok),
-        (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false).map(Ok),
-        (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true).map(Ok),
-        _ => pairs::plane_pair(a, b),
+        (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false, deadline).map(Ok),
+        (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true, deadline).map(Ok),
+        _ => pairs::plane_pair(a, b, deadline),
     }
 }

@@ -36,18 +36,20 @@ pub fn project(
         }
         Shape::Curve2(c) => {
             let p = point.doubles::<2>("point")?;
-            match project_point_conic2(p, onto, how.nearest) {
+            match project_point_conic2(p, onto, how.nearest, opts.deadline) {
                 Some(r) => Ok(r),
                 None => project_curved::onto_curve(c, p, how.nearest, opts),
             }
         }
         Shape::Conic2(_) => {
             let p = point.doubles::<2>("point")?;
-            project_point_conic2(p, onto, how.nearest).ok_or_else(|| GeomError::Unsupported {
-                field: "onto".into(),
-                reason: "projection onto a degenerate `conic2` (a line pair), or onto a \
+            project_point_conic2(p, onto, how.nearest, opts.deadline).ok_or_else(|| {
+                GeomError::Unsupported {
+                    field: "onto".into(),
+                    reason: "projection onto a degenerate `conic2` (a line pair), or onto a \
                          conic from its centre, is not implemented"
-                    .into(),
+                        .into(),
+                }
             })
         }
         Shape::Polyhedron(_) => Err(GeomError::Unsupported {

@@ -16,12 +16,19 @@ use crate::surface::Surface;
 /// The most contact candidates handed to the locator (nearest first).
 const MAX_CONTACT_SEEDS: usize = 64;
 
-/// Every curve and singular point the float path finds (§9.2–§9.5).
+/// Every curve and singular point the float path finds (§9.2–§9.5). Once the
+/// certifier's deadline has passed no new branch is traced and no contact located
+/// (issue 20): what was found seeds the certified stage, whose completeness proof
+/// fails under the same deadline.
 pub fn trace_all<R: Surface, S: Surface>(pair: &Pair<'_, R, S>) -> SurfaceIntersectionF64 {
+    let late = || pair.options.certify.late();
     let (mut starts, contacts) = starting_points(pair);
     let mut tracer = Tracer::new(pair);
     let mut curves: Vec<IntersectionCurve> = Vec::new();
     while let Some(s) = starts.pop() {
+        if late() {
+            break;
+        }
         if curves.iter().any(|c| on_curve(pair, c, &s)) {
             continue;
         }
@@ -32,6 +39,9 @@ pub fn trace_all<R: Surface, S: Surface>(pair: &Pair<'_, R, S>) -> SurfaceInters
     }
     let reach = 0.5;
     for x in contacts.into_iter().take(MAX_CONTACT_SEEDS) {
+        if late() {
+            break;
+        }
         if let Some(c) = locate_contact(pair, x, reach, SingularKind::Contact) {
             tracer.add_singular(c);
         }

@@ -8,9 +8,12 @@
 use super::frame::LocalFrame;
 use super::operand::Pair;
 use super::trace::Start;
+use crate::certify::past;
 use crate::curve::Curve;
 use crate::num::vector::{cross, dot, norm_f64, sub};
-use crate::ops::intersect::curve_surface::{intersect_curve_surface_f64, CurveSurfacePoint};
+use crate::ops::intersect::curve_surface::{
+    intersect_curve_surface_until, CurveSurfacePoint, Seeds,
+};
 use crate::ops::project::IsoCurve;
 use crate::surface::Surface;
 use crate::walk::surface::{SurfaceWalk, SurfaceWalkOptions};
@@ -43,21 +46,30 @@ fn iso_values(nodes: &[[f64; 4]]) -> (Vec<f64>, Vec<f64>) {
     (rows, us)
 }
 
-/// Stage 1: the start points and the contact candidates (`[u, v, a, b]`).
+/// Stage 1: the start points and the contact candidates (`[u, v, a, b]`). Once the
+/// certifier's deadline (`options.certify.deadline`) has passed, the iso-curves left are
+/// not intersected (issue 20): the start points found by then only seed the tracer, and
+/// the completeness proof, run under the same deadline, then fails with "time limit
+/// reached", so a point missed here is never claimed absent.
 pub fn starting_points<R: Surface, S: Surface>(
     pair: &Pair<'_, R, S>,
 ) -> (Vec<Start>, Vec<[f64; 4]>) {
     let (nr, ns) = (nodes(pair.r), nodes(pair.s));
+    let deadline = pair.options.certify.deadline;
     let mut found: Vec<([f64; 4], bool)> = Vec::new();
     // 1. iso-curves of r against s: points (u, v) = iso, (a, b) on s
-    for (fixed, value, cp) in iso_intersections(pair.r, pair.s, &nr, &ns, &pair.options.precision) {
+    for (fixed, value, cp) in
+        iso_intersections(pair.r, pair.s, &nr, &ns, &pair.options.precision, deadline)
+    {
         let t = cp.t;
         let (u, v) = if fixed == 1 { (t, value) } else { (value, t) };
         let [a, b] = cp.surface_params;
         found.push(([u, v, a, b], cp.tangent));
     }
     // 2. iso-curves of s against r
-    for (fixed, value, cp) in iso_intersections(pair.s, pair.r, &ns, &nr, &pair.options.precision) {
+    for (fixed, value, cp) in
+        iso_intersections(pair.s, pair.r, &ns, &nr, &pair.options.precision, deadline)
+    {
         let t = cp.t;
         let (a, b) = if fixed == 1 { (t, value) } else { (value, t) };
         let [u, v] = cp.surface_params;
@@ -78,7 +90,9 @@ pub fn starting_points<R: Surface, S: Surface>(
             });
         }
     }
-    contacts.extend(contact_seeds(pair, &nr, &ns));
+    if !past(deadline) {
+        contacts.extend(contact_seeds(pair, &nr, &ns));
+    }
     (starts, contacts)
 }
 
@@ -91,13 +105,16 @@ fn same<R, S>(pair: &Pair<'_, R, S>, x: &[f64; 4], y: &[f64; 4]) -> bool {
 }
 
 /// Every iso-curve of `q` (rows `v = v_j`, columns `u = u_i`) intersected with `other`:
-/// `(fixed direction of q, fixed value, point)` with `t` the free parameter of q.
+/// `(fixed direction of q, fixed value, point)` with `t` the free parameter of q; the
+/// iso-curves left when `deadline` passes are skipped (checked per iso-curve, and per
+/// curve sample and guess inside [`intersect_curve_surface_until`]).
 fn iso_intersections<Q: Surface, O: Surface>(
     q: &Q,
     other: &O,
     q_nodes: &[[f64; 4]],
     other_nodes: &[[f64; 4]],
     precision: &crate::ops::float::Precision,
+    deadline: Option<std::time::Instant>,
 ) -> Vec<(usize, f64, CurveSurfacePoint)> {
     let (rows, columns) = iso_values(q_nodes);
     let mut out = Vec::new();
@@ -106,6 +123,9 @@ fn iso_intersections<Q: Surface, O: Surface>(
         .map(|&v| (1usize, v))
         .chain(columns.iter().map(|&u| (0usize, u)));
     for (fixed, value) in lines {
+        if past(deadline) {
+            break;
+        }
         // IsoCurve's `direction` is the running parameter.
         let iso = IsoCurve {
             surface: q,
@@ -119,7 +139,12 @@ fn iso_intersections<Q: Surface, O: Surface>(
         if samples.is_empty() || iso.domain().0 >= iso.domain().1 {
             continue;
         }
-        for p in intersect_curve_surface_f64(other, &iso, &samples, other_nodes, SCAN, precision) {
+        let seeds = Seeds {
+            curve_samples: &samples,
+            surface_nodes: other_nodes,
+            turn: SCAN,
+        };
+        for p in intersect_curve_surface_until(other, &iso, &seeds, precision, deadline) {
             out.push((fixed, value, p));
         }
     }

@@ -80,7 +80,10 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
             };
         }
         loop {
-            if points.len() >= pair.options.max_points {
+            // The deadline too ends a march unfinished (issue 20): checked every 64 points.
+            if points.len() >= pair.options.max_points
+                || (points.len() % 64 == 0 && pair.options.certify.late())
+            {
                 return Direction {
                     points,
                     end: CurveEnd::Unfinished,
