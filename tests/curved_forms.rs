@@ -151,11 +151,7 @@ fn check(r: &CaseResult, truths: &[Vec<Float>], params: &[Vec<Vec<Float>>]) -> R
 /// Defects of src/ these families expose, left out of the default run by name (they
 /// run with `GEOCERT_KNOWN_DEFECTS=1`); remove a name when its fix is merged.
 const KNOWN_DEFECTS: &[&str] = &[
-    // A root exactly on an interior knot of the NURBS circle (a foot or crossing at
-    // t = 1 or 3, where the parametrisation is G1 but not C1) comes back undecided at
-    // the 512-bit cap with no point at all: project (−0.375, −5.5) onto the circle of
-    // radius 2.6875 about (−0.375, 1.5) (feet at t = 1 and t = 3).
-    "nurbs_root_on_a_knot",
+    // (none open: `nurbs_root_on_a_knot` was fixed in src/ops/certified/pieces.rs)
 ];
 
 /// True if cases of the family `defect` run: not a known defect, or
