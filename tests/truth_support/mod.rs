@@ -221,8 +221,26 @@ impl Failures {
 /// Defects of src/ that families here expose, left out of the default run by name
 /// (they run with `GEOCERT_KNOWN_DEFECTS=1`); remove a name when its fix is merged.
 pub const KNOWN_DEFECTS: &[&str] = &[
-    // (none open: the NURBS knot defects of issue 21 were fixed in
-    // src/ops/certified/pieces.rs — each knot span is certified on its own)
+    // A root exactly on an interior knot of a NURBS curve where the other object's
+    // parameters are irrational (the angles of a `circle2` or a sphere at the
+    // crossing): each knot span is certified on its own (src/ops/certified/pieces.rs),
+    // but the root's box straddles the knot and the boundary decision has no exact
+    // candidate (the knot is exact, the angles are not), so it stays undecided
+    // (tests/rational_conics.rs, `nurbs_circles_in_the_plane` and
+    // `nurbs_circles_in_space_against_spheres`, the cases through a knot point).
+    // Also a line crossing the NURBS cylinder or sphere of tests/rational_patches.rs on
+    // a knot line of the patch (the patch is not split into knot rectangles yet).
+    "nurbs_knot_root_with_irrational_partner",
+    // Lines parallel to the axis against the NURBS ring torus of tests/rational_patches.rs
+    // (two transversal crossings): the box budget runs out (about 100 undecided boxes)
+    // in a third of the cases, e.g. case 5 of `axial_lines_across_a_nurbs_torus`. Knot
+    // rectangles certified one by one (`ops::certified::pieces::surface_pieces`) were
+    // tried: the shared budget then ran out in most cases.
+    "nurbs_torus_axial_lines",
+    // Projection onto the NURBS sphere restricted to v ∈ [1/4, 7/4]: runs over a minute
+    // per family. Split into knot rectangles it took seconds, but feet on the equator
+    // knot `v = 1` (u irrational) stayed undecided, as above.
+    "nurbs_sphere_zone_projection",
 ];
 
 /// True if cases of the family `defect` run: not a known defect, or

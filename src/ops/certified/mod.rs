@@ -55,7 +55,7 @@ impl Unknowns {
     }
 
     /// An enclosure of the period of coordinate `i` (the exact domain's length).
-    fn period(&self, i: usize) -> Interval {
+    pub(crate) fn period(&self, i: usize) -> Interval {
         let [lo, hi] = self.domain[i];
         let exact = Interval::point(hi) - Interval::point(lo);
         if self.rounded[i] {

@@ -21,6 +21,7 @@ use crate::certificate::{Arithmetic, Certified, Status};
 use crate::certify::{Root, System};
 use crate::curve::Curve;
 use crate::error::GeomError;
+use crate::num::Interval;
 use crate::surface::Surface;
 
 /// The pinned pieces of a curve with interior breaks, each with its closed parameter
@@ -109,12 +110,9 @@ fn merge(
         shifted_inside(&root.enclosure, &r.enclosure, whole)
             || shifted_inside(&r.enclosure, &root.enclosure, whole)
     });
-    let overlap = roots[..earlier.min(roots.len())].iter().position(|r| {
-        r.enclosure
-            .iter()
-            .zip(&root.enclosure)
-            .all(|(a, b)| !a.intersection(b).is_empty())
-    });
+    let overlap = roots[..earlier.min(roots.len())]
+        .iter()
+        .position(|r| meets_shifted(&root.enclosure, &r.enclosure, whole));
     match overlap {
         Some(i) if !nested => {
             let r = &mut roots[i];
@@ -132,6 +130,23 @@ fn merge(
         }
         _ => push_unique(roots, root, whole),
     }
+}
+
+/// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
+/// −P, P an enclosure of the period), meets `b` (a root on a seam found in two pieces
+/// at both ends of the period).
+fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
+    (0..a.len()).all(|i| {
+        let shifts = if whole.periodic[i] {
+            let p = whole.period(i);
+            vec![Interval::point(0.0), p, -p]
+        } else {
+            vec![Interval::point(0.0)]
+        };
+        shifts
+            .into_iter()
+            .any(|s| !(a[i] + s).intersection(&b[i]).is_empty())
+    })
 }
 
 /// The answer of the pieces together, with the status and completeness rules of

@@ -381,16 +381,18 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
             .map(|p| vec![p.surface_params[0], p.surface_params[1], p.t])
             .collect();
     let unknowns = Unknowns::concat(&[surface_unknowns(surface), curve_unknowns(curve)]);
-    let (pinned, pinned_s) = (pieces::curve_pieces(curve), pieces::surface_pieces(surface));
-    let roots = if pinned.is_some() || pinned_s.is_some() {
-        // A NURBS curve or patch: span by span (issue 21, [`pieces`]).
-        let mut systems = Vec::new();
-        for (surface, us) in pieces::surface_parts(surface, &pinned_s) {
-            for (curve, uc) in pieces::curve_parts(curve, &pinned) {
-                let u = Unknowns::concat(&[us.clone(), uc]);
-                systems.push((CurveSurfaceSystem { surface, curve }, u));
-            }
-        }
+    let pinned = pieces::curve_pieces(curve);
+    let roots = if pinned.is_some() {
+        // A NURBS curve: span by span (issue 21, [`pieces`]). The surface is not split
+        // (knot rectangles of a NURBS patch are not yet used here: the shared box
+        // budget ran out on the NURBS torus).
+        let systems: Vec<_> = pieces::curve_parts(curve, &pinned)
+            .into_iter()
+            .map(|(curve, uc)| {
+                let u = Unknowns::concat(&[surface_unknowns(surface), uc]);
+                (CurveSurfaceSystem { surface, curve }, u)
+            })
+            .collect();
         pieces::certify_roots_in_pieces(&systems, &unknowns, &guesses, opts, &|_| false)?
     } else {
         let sys = CurveSurfaceSystem { surface, curve };

@@ -283,7 +283,7 @@ pub fn project_point_surface<S: Surface>(
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
     use crate::ops::certified::{
-        certify_roots_with, pieces, surface_point, surface_unknowns, CertifiedPoint,
+        certify_roots_with, surface_point, surface_unknowns, CertifiedPoint,
     };
     let guesses: Vec<Vec<f64>> =
         match project_point_surface_f64(surface, p, nodes, precision, false) {
@@ -293,18 +293,7 @@ pub fn project_point_surface<S: Surface>(
     let sys = SurfaceFootSystem { surface, point: *p };
     // Roots on a pole edge whose point is no foot are dropped (`super::pole`).
     let not_a_foot = |r: &crate::certify::Root| super::pole::spurious_pole_root(surface, p, r);
-    let pinned = pieces::surface_pieces(surface);
-    let roots = if pinned.is_some() {
-        // A NURBS patch: knot rectangle by knot rectangle (issue 21, [`pieces`]).
-        let systems: Vec<_> = pieces::surface_parts(surface, &pinned)
-            .into_iter()
-            .map(|(surface, u)| (SurfaceFootSystem { surface, point: *p }, u))
-            .collect();
-        let whole = surface_unknowns(surface);
-        pieces::certify_roots_in_pieces(&systems, &whole, &guesses, opts, &not_a_foot)?
-    } else {
-        certify_roots_with(&sys, &surface_unknowns(surface), &guesses, opts, not_a_foot)?
-    };
+    let roots = certify_roots_with(&sys, &surface_unknowns(surface), &guesses, opts, not_a_foot)?;
     Ok(roots.map(|rs| {
         rs.into_iter()
             .map(|root| {
