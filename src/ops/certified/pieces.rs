@@ -205,9 +205,12 @@ pub fn curve_parts<'a, C: Curve<D>, const D: usize>(
     }
 }
 
+/// Pinned knot rectangles, each with its closed `[u, v]` ranges.
+pub type SurfacePieces<S> = Vec<(S, [[f64; 2]; 2])>;
+
 /// The pinned knot rectangles of a surface with interior breaks, each with its closed
 /// `[u, v]` ranges; `None` when the surface is one piece (or a bound is rounded).
-pub fn surface_pieces<S: Surface>(s: &S) -> Option<Vec<(S, [[f64; 2]; 2])>> {
+pub fn surface_pieces<S: Surface>(s: &S) -> Option<SurfacePieces<S>> {
     let breaks = s.piece_breaks();
     if breaks.iter().all(Vec::is_empty) || s.domain_rounded().iter().any(|&r| r) {
         return None;
@@ -233,7 +236,7 @@ pub fn surface_pieces<S: Surface>(s: &S) -> Option<Vec<(S, [[f64; 2]; 2])>> {
 /// A surface's parts for [`certify_roots_in_pieces`], as [`curve_parts`].
 pub fn surface_parts<'a, S: Surface>(
     s: &'a S,
-    pinned: &'a Option<Vec<(S, [[f64; 2]; 2])>>,
+    pinned: &'a Option<SurfacePieces<S>>,
 ) -> Vec<(&'a S, Unknowns)> {
     match pinned {
         Some(parts) => parts
