@@ -151,11 +151,7 @@ fn check(r: &CaseResult, truths: &[Vec<Float>], params: &[Vec<Vec<Float>>]) -> R
 /// Defects of src/ these families expose, left out of the default run by name (they
 /// run with `GEOCERT_KNOWN_DEFECTS=1`); remove a name when its fix is merged.
 const KNOWN_DEFECTS: &[&str] = &[
-    // A root exactly on an interior knot of the NURBS circle (a foot or crossing at
-    // t = 1 or 3, where the parametrisation is G1 but not C1) comes back undecided at
-    // the 512-bit cap with no point at all: project (−0.375, −5.5) onto the circle of
-    // radius 2.6875 about (−0.375, 1.5) (feet at t = 1 and t = 3).
-    "nurbs_root_on_a_knot",
+    // (none open: `nurbs_root_on_a_knot` was fixed in src/ops/certified/pieces.rs)
 ];
 
 /// True if cases of the family `defect` run: not a known defect, or
@@ -235,7 +231,8 @@ fn lines_across_a_nurbs_circle() {
 }
 
 /// Projections of a point onto the NURBS circle: two feet, `c ± r(p − c)/|p − c|`, and
-/// the nearest one; on the vertical through the centre both feet sit on knots.
+/// the nearest one; on the vertical through the centre both feet sit on knots (also
+/// 1 ulp and 1e-9 beside it).
 #[test]
 fn projections_onto_a_nurbs_circle() {
     let mut g = Gen::new(2121);
@@ -243,7 +240,13 @@ fn projections_onto_a_nurbs_circle() {
         let c = [g.dyadic(-2.0, 2.0, 3), g.dyadic(-2.0, 2.0, 3)];
         let r = g.dyadic(0.5, 3.0, 4);
         let p = if i % 4 == 0 {
-            [c[0], c[1] + g.dyadic(-3.0 * r, 3.0 * r, 4)]
+            // on the vertical through the knots, 1 ulp or 1e-9 beside it
+            let x = c[0] + [0.0, 0.0, 1e-9, -1e-9][g.below(4)] * r;
+            let x = match g.below(3) {
+                0 => f64::from_bits(x.to_bits() + 1),
+                _ => x,
+            };
+            [x, c[1] + g.dyadic(-3.0 * r, 3.0 * r, 4)]
         } else {
             [
                 c[0] + g.dyadic(-3.0 * r, 3.0 * r, 4),

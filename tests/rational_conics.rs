@@ -109,9 +109,6 @@ fn lines_across_a_nurbs_ellipse() {
         let m = [1.0, 1.0, 1.0, magnitude(g.below(4))][i % 4];
         let e0 = ellipse2(&mut g);
         let (o, d) = line_through(&mut g, &e0, i);
-        if !runs((i % 3 == 0).then_some("nurbs_root_on_a_knot")) {
-            continue;
-        }
         let (e, o, d) = (e0.scaled(m), o.map(|x| x * m), d.map(|x| x * m));
         let truths = line_ellipse(&e, o, d);
         if truths.iter().any(|t| near_seam(&t[1], &t[2])) {
@@ -313,7 +310,7 @@ fn nurbs_circles_in_space_against_spheres() {
         } else {
             (g.vec(-2.0, 2.0, 3), g.dyadic(0.5, 3.0, 4))
         };
-        if !runs((i % 3 == 0).then_some("nurbs_root_on_a_knot")) {
+        if !runs((i % 3 == 0).then_some("nurbs_knot_root_with_irrational_partner")) {
             continue;
         }
         let (e, s, r, rho) = (e0.scaled(m), s0.map(|x| x * m), r0 * m, rho0 * m);
@@ -395,7 +392,7 @@ fn nurbs_circles_in_the_plane() {
         } else {
             (g.vec(-2.0, 2.0, 3), g.dyadic(0.5, 2.0, 3))
         };
-        if !runs((i % 3 == 0).then_some("nurbs_root_on_a_knot")) {
+        if !runs((i % 3 == 0).then_some("nurbs_knot_root_with_irrational_partner")) {
             continue;
         }
         let (c1, r1, c2, r2) = (c1.map(|x| x * m), r1 * m, c2.map(|x| x * m), r2 * m);
@@ -477,11 +474,6 @@ fn projections_onto_a_nurbs_circle_in_space() {
         };
         let p0: [f64; 3] =
             std::array::from_fn(|j| e0.c[j] + k * (u * e0.a[j] + v * e0.b[j]) + h * n[j]);
-        if !runs(turned.then_some("nurbs_turned_circle_projection"))
-            || !runs((i % 4 == 0).then_some("nurbs_root_on_a_knot"))
-        {
-            continue;
-        }
         let (e, p, rho) = (e0.scaled(m), p0.map(|x| x * m), rho0 * m);
         let pc: Vec<f64> = (0..3).map(|j| p[j] - e.c[j]).collect(); // exact
         let (x, y) = (dot(&e.a, &pc) / rho, dot(&e.b, &pc) / rho);

@@ -210,7 +210,7 @@ fn lines_across_a_nurbs_sphere() {
         let m = [1.0, 1.0, 1.0, magnitude(g.below(4))][i % 4];
         let k = g.dyadic(0.125, 0.5, 3);
         let c: [f64; 3] = g.vec(-2.0, 2.0, 3);
-        if !runs((i % 2 == 0).then_some("nurbs_root_on_a_knot")) {
+        if !runs((i % 2 == 0).then_some("nurbs_knot_root_with_irrational_partner")) {
             continue;
         }
         let q = if i % 2 == 0 {
@@ -262,7 +262,7 @@ fn lines_across_a_nurbs_cylinder() {
         let h = [g.dyadic(-3.0, -1.0, 3), g.dyadic(1.0, 3.0, 3)];
         let q = if i % 2 == 0 {
             let [x, y] = [[3.0, 4.0], [4.0, -3.0], [-5.0, 0.0], [0.0, 5.0]][g.below(4)];
-            if !runs((x == 0.0 || y == 0.0).then_some("nurbs_root_on_a_knot")) {
+            if !runs((x == 0.0 || y == 0.0).then_some("nurbs_knot_root_with_irrational_partner")) {
                 continue;
             }
             [x * k, y * k, g.dyadic(-0.5, 0.5, 3)]

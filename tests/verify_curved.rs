@@ -31,7 +31,8 @@ use rug::float::Round;
 use rug::{Float, Rational};
 use serde_json::{json, Value};
 use verify_support::{
-    claiming, count, distance, doubles, families, point_claim, solve, unit, verify, Case, PREC,
+    claiming, count, diameter, doubles, families, holds, point_claim, solve, sound, truth_known,
+    unit, verify, Case,
 };
 
 const TOL: f64 = 1e-9;
@@ -42,64 +43,6 @@ fn verdicts(r: &Value) -> Vec<String> {
         .unwrap_or_else(|| panic!("no claims: {r}"))
         .iter()
         .map(|c| c["verdict"].as_str().unwrap().to_string())
-        .collect()
-}
-
-/// Every verdict on claims by coordinates agrees with the truth (module doc).
-fn assert_sound(name: &str, r: &Value, claimed: &[Vec<f64>], truths: &[Vec<Float>], tol: f64) {
-    let tol = Float::with_val(PREC, tol);
-    for (i, c) in claimed.iter().enumerate() {
-        let verdict = r["claims"][i]["verdict"].as_str().unwrap();
-        let near = truths.iter().any(|t| distance(c, t) <= tol);
-        match verdict {
-            "confirmed" => assert!(
-                near,
-                "{name}: confirmed, but no solution is near {c:?}: {r}"
-            ),
-            "refuted" => assert!(!near, "{name}: refuted, but a solution is near {c:?}: {r}"),
-            _ => {}
-        }
-    }
-}
-
-fn holds(p: &Value, t: &[Float]) -> bool {
-    p["box"].as_array().unwrap().iter().zip(t).all(|(b, x)| {
-        let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
-        *x >= lo && *x <= hi
-    })
-}
-
-/// The diameter of a point's box.
-fn diameter(p: &Value) -> f64 {
-    p["box"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|b| b[1].as_f64().unwrap() - b[0].as_f64().unwrap())
-        .map(|w| w * w)
-        .sum::<f64>()
-        .sqrt()
-}
-
-/// The answer is decided and complete, with as many points as there are solutions,
-/// each holding exactly one truth in its box; the diameter of each truth's box.
-fn assert_truth_known(name: &str, r: &Value, truths: &[Vec<Float>]) -> Vec<f64> {
-    assert_ne!(r["status"], "undecided", "{name}: {r}");
-    assert_eq!(r["complete"], true, "{name}: {r}");
-    let points = r["points"].as_array().unwrap();
-    assert_eq!(points.len(), truths.len(), "{name}: {r}");
-    truths
-        .iter()
-        .map(|t| {
-            let holding: Vec<&Value> = points.iter().filter(|p| holds(p, t)).collect();
-            assert_eq!(
-                holding.len(),
-                1,
-                "{name}: one box per truth {:?}: {r}",
-                doubles(t)
-            );
-            diameter(holding[0])
-        })
         .collect()
 }
 
@@ -146,8 +89,8 @@ fn closed_form_claims_are_confirmed_and_nothing_is_missed() {
     for (name, c) in cases() {
         let claimed: Vec<Vec<f64>> = c.truths.iter().map(|t| doubles(t)).collect();
         let r = verify(&claiming(&c.case, point_claim(&claimed, TOL)));
-        let widths = assert_truth_known(&name, &r, &c.truths);
-        assert_sound(&name, &r, &claimed, &c.truths, TOL);
+        let widths = truth_known(&name, &r, &c.truths);
+        sound(&name, &r, &claimed, &c.truths, TOL);
         for (i, w) in widths.iter().enumerate() {
             let v = &r["claims"][i]["verdict"];
             if *w <= TOL / 2.0 {
@@ -174,7 +117,7 @@ fn claims_by_parameters_are_confirmed() {
             &c.case,
             json!({"points": points, "tolerance": TOL}),
         ));
-        let widths = assert_truth_known(&name, &r, &c.truths);
+        let widths = truth_known(&name, &r, &c.truths);
         for (i, w) in widths.iter().enumerate() {
             let v = &r["claims"][i]["verdict"];
             if *w <= TOL / 2.0 {
@@ -209,8 +152,8 @@ fn claims_moved_by_ten_tolerances_are_refuted_and_the_solutions_missed() {
             })
             .collect();
         let r = verify(&claiming(&c.case, point_claim(&claimed, TOL)));
-        let widths = assert_truth_known(&name, &r, &c.truths);
-        assert_sound(&name, &r, &claimed, &c.truths, TOL);
+        let widths = truth_known(&name, &r, &c.truths);
+        sound(&name, &r, &claimed, &c.truths, TOL);
         let mut narrow = 0;
         for (i, w) in widths.iter().enumerate() {
             let v = &r["claims"][i]["verdict"];
@@ -239,7 +182,7 @@ fn a_claim_omitting_a_solution_lists_it_as_missed() {
             .map(|j| doubles(&c.truths[j]))
             .collect();
         let r = verify(&claiming(&c.case, point_claim(&claimed, TOL)));
-        assert_sound(&name, &r, &claimed, &c.truths, TOL);
+        sound(&name, &r, &claimed, &c.truths, TOL);
         assert!(!verdicts(&r).iter().any(|v| v == "refuted"), "{name}: {r}");
         let missed = r["missed"].as_array().unwrap();
         assert_eq!(missed.len(), 1, "{name}: {r}");
@@ -301,7 +244,7 @@ fn claims_whose_box_straddles_the_tolerance_are_undecided_never_refuted() {
             let gap = Rational::from_f64(b[k][0]).unwrap() - Rational::from_f64(claim[k]).unwrap();
             let tol = up(&gap);
             let r = verify(&claiming(&c.case, point_claim(&[claim.clone()], tol)));
-            assert_sound(&name, &r, &[claim], &c.truths, tol);
+            sound(&name, &r, &[claim], &c.truths, tol);
             assert_eq!(verdicts(&r), ["undecided"], "{name}: {r}");
             let reason = r["claims"][0]["reason"].as_str().unwrap();
             assert!(reason.contains("straddles"), "{name}: {reason}");

@@ -27,7 +27,9 @@ use truth_support::conics::{
     circle_param, dot, line_ellipse, magnitude, quadratic, trig_solve, Ellipse, Gen,
 };
 use truth_support::{fl, BITS};
-use verify_support::{claiming, count, distance, doubles, point_claim, unit, verify};
+use verify_support::{
+    claiming, count, doubles, holds, point_claim, sound, truth_known, unit, verify,
+};
 
 const TOL: f64 = 1e-9;
 
@@ -36,58 +38,6 @@ struct Case {
     case: Value,
     truths: Vec<Vec<Float>>,
     scale: f64,
-}
-
-fn holds(p: &Value, t: &[Float]) -> bool {
-    p["box"].as_array().unwrap().iter().zip(t).all(|(b, x)| {
-        let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
-        *x >= lo && *x <= hi
-    })
-}
-
-fn diameter(p: &Value) -> f64 {
-    p["box"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|b| b[1].as_f64().unwrap() - b[0].as_f64().unwrap())
-        .map(|w| w * w)
-        .sum::<f64>()
-        .sqrt()
-}
-
-/// Decided, complete, one box per truth; the diameters of the truths' boxes.
-fn truth_known(name: &str, r: &Value, truths: &[Vec<Float>]) -> Vec<f64> {
-    assert_ne!(r["status"], "undecided", "{name}: {r}");
-    assert_eq!(r["complete"], true, "{name}: {r}");
-    let points = r["points"].as_array().cloned().unwrap_or_default();
-    assert_eq!(points.len(), truths.len(), "{name}: {r}");
-    truths
-        .iter()
-        .map(|t| {
-            let h: Vec<&Value> = points.iter().filter(|p| holds(p, t)).collect();
-            assert_eq!(
-                h.len(),
-                1,
-                "{name}: one box per truth {:?}: {r}",
-                doubles(t)
-            );
-            diameter(h[0])
-        })
-        .collect()
-}
-
-/// Every `confirmed` has a truth within `tol`, every `refuted` none.
-fn sound(name: &str, r: &Value, claimed: &[Vec<f64>], truths: &[Vec<Float>], tol: f64) {
-    let tolf = Float::with_val(BITS, tol);
-    for (i, c) in claimed.iter().enumerate() {
-        let near = truths.iter().any(|t| distance(c, t) <= tolf);
-        match r["claims"][i]["verdict"].as_str().unwrap() {
-            "confirmed" => assert!(near, "{name}: confirmed far from every solution {c:?}: {r}"),
-            "refuted" => assert!(!near, "{name}: refuted near a solution {c:?}: {r}"),
-            _ => {}
-        }
-    }
 }
 
 /// All the checks of the module doc on one family.
@@ -485,8 +435,5 @@ fn verify_projection_onto_cylinders() {
 
 #[test]
 fn verify_projection_onto_nurbs_circles() {
-    if !truth_support::runs(Some("verify_nurbs_circle_projection_incomplete")) {
-        return;
-    }
     run_family("project → nurbs circle", 2157, project_nurbs_circle);
 }

@@ -54,6 +54,18 @@ macro_rules! forward {
 }
 
 impl Curve<3> for AnyCurve3 {
+    fn piece_breaks(&self) -> Vec<f64> {
+        match self {
+            AnyCurve3::Nurbs(c) => c.piece_breaks(),
+            _ => Vec::new(),
+        }
+    }
+    fn pinned_at(&self, t: f64) -> Option<Self> {
+        match self {
+            AnyCurve3::Nurbs(c) => c.pinned_at(t).map(AnyCurve3::Nurbs),
+            _ => None,
+        }
+    }
     fn domain(&self) -> (f64, f64) {
         forward!(AnyCurve3, self, c => c.domain())
     }
@@ -78,6 +90,18 @@ impl Curve<3> for AnyCurve3 {
 }
 
 impl Curve<2> for AnyCurve2 {
+    fn piece_breaks(&self) -> Vec<f64> {
+        match self {
+            AnyCurve2::Nurbs(c) => c.piece_breaks(),
+            _ => Vec::new(),
+        }
+    }
+    fn pinned_at(&self, t: f64) -> Option<Self> {
+        match self {
+            AnyCurve2::Nurbs(c) => c.pinned_at(t).map(AnyCurve2::Nurbs),
+            _ => None,
+        }
+    }
     fn domain(&self) -> (f64, f64) {
         forward!(AnyCurve2, self, c => c.domain())
     }

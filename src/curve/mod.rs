@@ -109,6 +109,26 @@ pub trait Curve<const D: usize> {
         Vec::new()
     }
 
+    /// The parameters strictly inside the domain where the curve's formula changes (the
+    /// distinct interior knots of a NURBS), ascending: on each closed piece between
+    /// them the curve is one rational (polynomial) map, the one [`Curve::pinned_at`]
+    /// continues. The certifier solves piece by piece (issue 21: a box straddling a knot
+    /// is never smooth, so a root on or at a knot could not be proven). Default: none.
+    fn piece_breaks(&self) -> Vec<f64> {
+        Vec::new()
+    }
+
+    /// The curve whose [`Curve::jet`] evaluates, at every parameter, the formula of the
+    /// piece containing `t` (a point strictly inside a piece of
+    /// [`Curve::piece_breaks`]), continued analytically beyond that piece; it agrees
+    /// with `self` on the closed piece. `None` when the curve has no pieces.
+    fn pinned_at(&self, _t: f64) -> Option<Self>
+    where
+        Self: Sized,
+    {
+        None
+    }
+
     /// How the walk of OPERATIONS.md §2.1 chooses its step at `t` (see [`StepHint`]).
     /// The default is the general rule (2.1) with no extra clamp.
     fn step_hint(&self, _t: f64) -> StepHint {

@@ -29,6 +29,9 @@ pub struct NurbsCurve<const D: usize> {
     domain: Domain,
     closed: bool,
     periodic: bool,
+    /// [`Curve::pinned_at`]: the piece (of [`KnotVector::breaks`]) whose formula
+    /// [`Curve::jet`] evaluates everywhere.
+    pin: Option<usize>,
 }
 
 impl<const D: usize> NurbsCurve<D> {
@@ -66,6 +69,7 @@ impl<const D: usize> NurbsCurve<D> {
             domain: sub,
             closed,
             periodic,
+            pin: None,
         })
     }
 
@@ -225,6 +229,10 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; D]> {
         let order = order.min(3);
+        if let Some(i) = self.pin {
+            // One span's rational map, valid for every real t (its continuation).
+            return self.span_jet(self.knots.span_of_piece(i), t, order);
+        }
         let eval = |ti: &T| {
             piecewise_jet(ti, self.knots.breaks(), |i, tp| {
                 self.span_jet(self.knots.span_of_piece(i), tp, order)
@@ -259,6 +267,32 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
             i = j;
         }
         out
+    }
+    /// The distinct knots strictly inside the domain (a pinned curve has none).
+    fn piece_breaks(&self) -> Vec<f64> {
+        let (lo, hi) = self.domain.pair();
+        if self.pin.is_some() {
+            return Vec::new();
+        }
+        let b = self.knots.breaks();
+        b.iter().copied().filter(|&k| lo < k && k < hi).collect()
+    }
+    /// The same curve with `pin` set to the piece holding `t` ([`KnotVector::breaks`]:
+    /// piece `i` is `[b_i, b_{i+1}]`), not closed nor periodic any more (the
+    /// continuation of one piece does not wrap).
+    fn pinned_at(&self, t: f64) -> Option<Self> {
+        let b = self.knots.breaks();
+        let pieces = b.len().saturating_sub(1).max(1);
+        let i = b
+            .partition_point(|&k| k <= t)
+            .saturating_sub(1)
+            .min(pieces - 1);
+        Some(NurbsCurve {
+            pin: Some(i),
+            closed: false,
+            periodic: false,
+            ..self.clone()
+        })
     }
     /// (2.1) with the B-spline clamp of §2.1: at most ½ of the current knot span.
     fn step_hint(&self, t: f64) -> StepHint {

@@ -68,6 +68,18 @@ impl Surface for AnySurface {
     fn step_rules(&self) -> [StepRule; 2] {
         each_surface!(self, s => s.step_rules())
     }
+    fn piece_breaks(&self) -> [Vec<f64>; 2] {
+        match self {
+            AnySurface::Nurbs(s) => s.piece_breaks(),
+            _ => [Vec::new(), Vec::new()],
+        }
+    }
+    fn pinned_at(&self, u: f64, v: f64) -> Option<Self> {
+        match self {
+            AnySurface::Nurbs(s) => s.pinned_at(u, v).map(AnySurface::Nurbs),
+            _ => None,
+        }
+    }
     fn knot_span(&self, direction: usize, t: f64) -> Option<(f64, f64)> {
         each_surface!(self, s => s.knot_span(direction, t))
     }

@@ -100,6 +100,25 @@ pub trait Surface {
         None
     }
 
+    /// Per direction, the parameters strictly inside the domain where the formula
+    /// changes (distinct interior knots of a NURBS), ascending; the certifier solves
+    /// each closed knot rectangle on its own with [`Surface::pinned_at`] (issue 21, as
+    /// [`crate::curve::Curve::piece_breaks`]). Default: none.
+    fn piece_breaks(&self) -> [Vec<f64>; 2] {
+        [Vec::new(), Vec::new()]
+    }
+
+    /// The surface whose [`Surface::jet`] evaluates everywhere the formula of the knot
+    /// rectangle containing `(u, v)` (a point strictly inside one), continued
+    /// analytically; it agrees with `self` on that closed rectangle. `None` when the
+    /// surface has no pieces.
+    fn pinned_at(&self, _u: f64, _v: f64) -> Option<Self>
+    where
+        Self: Sized,
+    {
+        None
+    }
+
     /// The unit normal `n̂ = (s_u × s_v)/|s_u × s_v|` (1.6), with the §1.3 limit at
     /// points where a partial derivative vanishes identically
     /// ([`differential::unit_normal`]).

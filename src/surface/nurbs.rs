@@ -26,6 +26,9 @@ pub struct NurbsSurface {
     pub(crate) knots: [Vec<f64>; 2],
     pub(crate) net: Net,
     domain: Domain,
+    /// [`Surface::pinned_at`]: the spans `[in u, in v]` whose formula
+    /// [`Surface::jet`] evaluates everywhere.
+    pin: Option<[usize; 2]>,
 }
 
 impl NurbsSurface {
@@ -49,6 +52,7 @@ impl NurbsSurface {
             knots: [knots_u, knots_v],
             net,
             domain: (du, dv),
+            pin: None,
         })
     }
 
@@ -173,15 +177,19 @@ impl NurbsSurface {
         }
     }
 
-    /// The non-empty spans that `t` touches in `direction`.
+    /// The non-empty spans that `t` touches in `direction` (only the pinned one for a
+    /// pinned patch: its polynomial continued over all of `t`).
     fn spans<T: Real>(&self, direction: usize, t: &T) -> impl Iterator<Item = usize> + '_ {
         let knots = &self.knots[direction];
-        let (a, b) = spans_touching(
-            knots,
-            self.degrees[direction],
-            self.count(direction),
-            t.bounds(),
-        );
+        let (a, b) = match self.pin {
+            Some(pin) => (pin[direction], pin[direction]),
+            None => spans_touching(
+                knots,
+                self.degrees[direction],
+                self.count(direction),
+                t.bounds(),
+            ),
+        };
         (a..=b).filter(move |&s| a == b || knots[s] < knots[s + 1])
     }
 }
@@ -201,6 +209,31 @@ fn join<T: Real>(acc: Option<Vec<[T; 3]>>, jet: Vec<[T; 3]>) -> Vec<[T; 3]> {
 impl Surface for NurbsSurface {
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
+    }
+
+    /// The distinct knots strictly inside the domain, per direction (none once pinned).
+    fn piece_breaks(&self) -> [Vec<f64>; 2] {
+        let (du, dv) = self.domain;
+        let inner = |k: &[f64], [lo, hi]: [f64; 2]| {
+            let mut b: Vec<f64> = k.iter().copied().filter(|&x| lo < x && x < hi).collect();
+            b.dedup();
+            b
+        };
+        match self.pin {
+            Some(_) => [Vec::new(), Vec::new()],
+            None => [inner(&self.knots[0], du), inner(&self.knots[1], dv)],
+        }
+    }
+    /// The same patch with `pin` set to the spans holding `(u, v)` (right-continuous,
+    /// as [`super::basis::find_span`]).
+    fn pinned_at(&self, u: f64, v: f64) -> Option<Self> {
+        let span = |d: usize, t: f64| {
+            super::basis::find_span(&self.knots[d], self.degrees[d], self.count(d), t)
+        };
+        Some(NurbsSurface {
+            pin: Some([span(0, u), span(1, v)]),
+            ..self.clone()
+        })
     }
 
     fn knot_span(&self, direction: usize, t: f64) -> Option<(f64, f64)> {

@@ -221,27 +221,26 @@ impl Failures {
 /// Defects of src/ that families here expose, left out of the default run by name
 /// (they run with `GEOCERT_KNOWN_DEFECTS=1`); remove a name when its fix is merged.
 pub const KNOWN_DEFECTS: &[&str] = &[
-    // A root exactly on an interior knot of a rational NURBS (the quadrant joints of the
-    // circle, G1 but not C1 there) comes back undecided at the 512-bit cap, after
-    // seconds. Also listed in tests/curved_forms.rs.
-    "nurbs_root_on_a_knot",
-    // Projection onto a NURBS circle whose net is turned (not along the coordinate
-    // axes), in the plane or in space: both feet are found, but one or two boxes stay
-    // undecided at the 512-bit cap, so the answer is not complete (and `nearest` is
-    // undecided): project (4.1875, −3.75) onto the circle of radius 2.5 about the
-    // origin with A = (1.5, 2), B = (−2, 1.5) (tests/rational_conics.rs).
-    "nurbs_turned_circle_projection",
+    // A root exactly on an interior knot of a NURBS curve where the other object's
+    // parameters are irrational (the angles of a `circle2` or a sphere at the
+    // crossing): each knot span is certified on its own (src/ops/certified/pieces.rs),
+    // but the root's box straddles the knot and the boundary decision has no exact
+    // candidate (the knot is exact, the angles are not), so it stays undecided
+    // (tests/rational_conics.rs, `nurbs_circles_in_the_plane` and
+    // `nurbs_circles_in_space_against_spheres`, the cases through a knot point).
+    // Also a line crossing the NURBS cylinder or sphere of tests/rational_patches.rs on
+    // a knot line of the patch (the patch is not split into knot rectangles yet).
+    "nurbs_knot_root_with_irrational_partner",
     // Lines parallel to the axis against the NURBS ring torus of tests/rational_patches.rs
     // (two transversal crossings): the box budget runs out (about 100 undecided boxes)
-    // in a third of the cases, e.g. case 5 of `axial_lines_across_a_nurbs_torus`.
+    // in a third of the cases, e.g. case 5 of `axial_lines_across_a_nurbs_torus`. Knot
+    // rectangles certified one by one (`ops::certified::pieces::surface_pieces`) were
+    // tried: the shared budget then ran out in most cases.
     "nurbs_torus_axial_lines",
     // Projection onto the NURBS sphere restricted to v ∈ [1/4, 7/4]: runs over a minute
-    // per family without an answer yet (not analysed: time).
+    // per family. Split into knot rectangles it took seconds, but feet on the equator
+    // knot `v = 1` (u irrational) stayed undecided, as above.
     "nurbs_sphere_zone_projection",
-    // tests/verify_rational.rs, not analysed (time): the projection onto an
-    // axis-aligned NURBS circle in space comes back undecided at the 512-bit cap in its
-    // first case (seed 2157).
-    "verify_nurbs_circle_projection_incomplete",
 ];
 
 /// True if cases of the family `defect` run: not a known defect, or

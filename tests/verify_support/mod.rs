@@ -606,3 +606,59 @@ pub fn point_claim(points: &[Vec<f64>], tol: f64) -> Value {
     json!({"points": points.iter().map(|p| json!({"xyz": xyz(p)})).collect::<Vec<_>>(),
            "tolerance": tol})
 }
+
+/// The truth `t` lies in the point's `box` (no slack).
+pub fn holds(p: &Value, t: &[Float]) -> bool {
+    p["box"].as_array().unwrap().iter().zip(t).all(|(b, x)| {
+        let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+        *x >= lo && *x <= hi
+    })
+}
+
+/// The diameter of a point's box.
+pub fn diameter(p: &Value) -> f64 {
+    p["box"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|b| b[1].as_f64().unwrap() - b[0].as_f64().unwrap())
+        .map(|w| w * w)
+        .sum::<f64>()
+        .sqrt()
+}
+
+/// The answer is decided and complete, with as many points as there are solutions,
+/// each holding exactly one truth in its box; the diameter of each truth's box.
+pub fn truth_known(name: &str, r: &Value, truths: &[Vec<Float>]) -> Vec<f64> {
+    assert_ne!(r["status"], "undecided", "{name}: {r}");
+    assert_eq!(r["complete"], true, "{name}: {r}");
+    let points = r["points"].as_array().cloned().unwrap_or_default();
+    assert_eq!(points.len(), truths.len(), "{name}: {r}");
+    truths
+        .iter()
+        .map(|t| {
+            let h: Vec<&Value> = points.iter().filter(|p| holds(p, t)).collect();
+            assert_eq!(
+                h.len(),
+                1,
+                "{name}: one box per truth {:?}: {r}",
+                doubles(t)
+            );
+            diameter(h[0])
+        })
+        .collect()
+}
+
+/// Every verdict on claims by coordinates agrees with the truth: `confirmed` only with
+/// a true solution within `tol`, `refuted` only with none.
+pub fn sound(name: &str, r: &Value, claimed: &[Vec<f64>], truths: &[Vec<Float>], tol: f64) {
+    let tolf = Float::with_val(PREC, tol);
+    for (i, c) in claimed.iter().enumerate() {
+        let near = truths.iter().any(|t| distance(c, t) <= tolf);
+        match r["claims"][i]["verdict"].as_str().unwrap() {
+            "confirmed" => assert!(near, "{name}: confirmed far from every solution {c:?}: {r}"),
+            "refuted" => assert!(!near, "{name}: refuted near a solution {c:?}: {r}"),
+            _ => {}
+        }
+    }
+}

@@ -22,6 +22,7 @@ use crate::num::Interval;
 pub use crate::certify::Options;
 
 pub mod boundary;
+pub mod pieces;
 mod seam;
 
 use boundary::{decide_boundary, Decided};
@@ -54,7 +55,7 @@ impl Unknowns {
     }
 
     /// An enclosure of the period of coordinate `i` (the exact domain's length).
-    fn period(&self, i: usize) -> Interval {
+    pub(crate) fn period(&self, i: usize) -> Interval {
         let [lo, hi] = self.domain[i];
         let exact = Interval::point(hi) - Interval::point(lo);
         if self.rounded[i] {
@@ -270,7 +271,11 @@ fn at_boundary<S: System>(
 /// root whose box holds kept boxes replaces them when it may hold more roots than
 /// they count (a singular box over a simple one: dropping it would lose a root);
 /// otherwise the narrower kept box stays.
-fn push_unique(roots: &mut Vec<CertifiedRoot>, root: CertifiedRoot, unknowns: &Unknowns) {
+pub(crate) fn push_unique(
+    roots: &mut Vec<CertifiedRoot>,
+    root: CertifiedRoot,
+    unknowns: &Unknowns,
+) {
     if let Some(r) = roots
         .iter_mut()
         .find(|r| shifted_inside(&root.enclosure, &r.enclosure, unknowns))
@@ -325,7 +330,7 @@ fn placement(enclosure: &[Interval], search: &[[f64; 2]], unknowns: &Unknowns) -
 
 /// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
 /// −P), lies inside `b`.
-fn shifted_inside(a: &[Interval], b: &[Interval], unknowns: &Unknowns) -> bool {
+pub(crate) fn shifted_inside(a: &[Interval], b: &[Interval], unknowns: &Unknowns) -> bool {
     // Each coordinate independently: the shifts are 0, +P, −P (P an enclosure of the
     // period), so every shifted copy is an enclosure of the shifted set.
     (0..a.len()).all(|i| {

@@ -239,14 +239,27 @@ pub fn intersect_curve2_curve2<A: Curve<2>, B: Curve<2>>(
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<2>>>, crate::GeomError> {
     use crate::ops::certified::{
-        certify_roots, curve_point, curve_unknowns, CertifiedPoint, Unknowns,
+        certify_roots, curve_point, curve_unknowns, pieces, CertifiedPoint, Unknowns,
     };
     let guesses: Vec<Vec<f64>> = intersect_curve_curve_f64(a, b, a_samples, b_samples, precision)
         .iter()
         .map(|p| p.params.to_vec())
         .collect();
     let unknowns = Unknowns::concat(&[curve_unknowns(a), curve_unknowns(b)]);
-    let roots = certify_roots(&CurveCurve2System { a, b }, &unknowns, &guesses, opts)?;
+    let (pa, pb) = (pieces::curve_pieces(a), pieces::curve_pieces(b));
+    let roots = if pa.is_some() || pb.is_some() {
+        // A NURBS: span by span (issue 21, [`pieces`]).
+        let mut systems = Vec::new();
+        for (a, ua) in pieces::curve_parts(a, &pa) {
+            for (b, ub) in pieces::curve_parts(b, &pb) {
+                let u = Unknowns::concat(&[ua.clone(), ub]);
+                systems.push((CurveCurve2System { a, b }, u));
+            }
+        }
+        pieces::certify_roots_in_pieces(&systems, &unknowns, &guesses, opts, &|_| false)?
+    } else {
+        certify_roots(&CurveCurve2System { a, b }, &unknowns, &guesses, opts)?
+    };
     Ok(roots.map(|rs| {
         rs.into_iter()
             .map(|root| {

@@ -367,7 +367,8 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
     use crate::ops::certified::{
-        certify_roots, curve_point, curve_unknowns, surface_unknowns, CertifiedPoint, Unknowns,
+        certify_roots, curve_point, curve_unknowns, pieces, surface_unknowns, CertifiedPoint,
+        Unknowns,
     };
     let seeds = Seeds {
         curve_samples,
@@ -380,8 +381,23 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
             .map(|p| vec![p.surface_params[0], p.surface_params[1], p.t])
             .collect();
     let unknowns = Unknowns::concat(&[surface_unknowns(surface), curve_unknowns(curve)]);
-    let sys = CurveSurfaceSystem { surface, curve };
-    let roots = certify_roots(&sys, &unknowns, &guesses, opts)?;
+    let pinned = pieces::curve_pieces(curve);
+    let roots = if pinned.is_some() {
+        // A NURBS curve: span by span (issue 21, [`pieces`]). The surface is not split
+        // (knot rectangles of a NURBS patch are not yet used here: the shared box
+        // budget ran out on the NURBS torus).
+        let systems: Vec<_> = pieces::curve_parts(curve, &pinned)
+            .into_iter()
+            .map(|(curve, uc)| {
+                let u = Unknowns::concat(&[surface_unknowns(surface), uc]);
+                (CurveSurfaceSystem { surface, curve }, u)
+            })
+            .collect();
+        pieces::certify_roots_in_pieces(&systems, &unknowns, &guesses, opts, &|_| false)?
+    } else {
+        let sys = CurveSurfaceSystem { surface, curve };
+        certify_roots(&sys, &unknowns, &guesses, opts)?
+    };
     Ok(roots
         .map(|rs| {
             rs.into_iter()

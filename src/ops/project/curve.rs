@@ -174,14 +174,40 @@ pub fn project_point_curve<C: Curve<D>, const D: usize>(
     precision: &Precision,
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<D>>>, crate::GeomError> {
-    use crate::ops::certified::{certify_roots, curve_point, curve_unknowns, CertifiedPoint};
+    use crate::ops::certified::{
+        certify_roots, curve_point, curve_unknowns, pieces, CertifiedPoint,
+    };
     let guesses: Vec<Vec<f64>> = match project_point_curve_f64(curve, p, samples, precision, false)
     {
         CurveFeet::Finite(f) => f.iter().map(|x| vec![x.t]).collect(),
         CurveFeet::Infinite => Vec::new(),
     };
-    let sys = CurveFootSystem { curve, point: *p };
-    let roots = certify_roots(&sys, &curve_unknowns(curve), &guesses, opts)?;
+    let roots = match pieces::curve_pieces(curve) {
+        // A NURBS: span by span (issue 21, [`pieces`]).
+        Some(parts) => {
+            let systems: Vec<_> = parts
+                .iter()
+                .map(|(c, range)| {
+                    let sys = CurveFootSystem {
+                        curve: c,
+                        point: *p,
+                    };
+                    (sys, pieces::piece_unknowns(*range))
+                })
+                .collect();
+            pieces::certify_roots_in_pieces(
+                &systems,
+                &curve_unknowns(curve),
+                &guesses,
+                opts,
+                &|_| false,
+            )?
+        }
+        None => {
+            let sys = CurveFootSystem { curve, point: *p };
+            certify_roots(&sys, &curve_unknowns(curve), &guesses, opts)?
+        }
+    };
     Ok(roots.map(|rs| {
         rs.into_iter()
             .map(|root| {
