@@ -31,11 +31,7 @@ use crate::ops::rational::exact::{dot, round_enclosure, RatInterval};
 const REFINE_BUDGET: usize = 4000;
 
 /// `num(t)/den(t)` correctly rounded at the root `t`; `None` past the budget.
-fn round_at(
-    t: &RealRoot,
-    num: &Polynomial,
-    den: &Polynomial,
-) -> Option<(Rounded, Option<Rational>)> {
+fn round_at(t: &RealRoot, num: &Polynomial, den: &Polynomial) -> Option<Exactly> {
     if let Some(x) = t.exact() {
         let v = num.eval(x) / den.eval(x);
         return Some((round_rational(&v), Some(v)));
@@ -84,15 +80,29 @@ fn straddled_double(q: &RatInterval) -> Option<Rational> {
     (q.lo <= d && d <= q.hi).then_some(d)
 }
 
-/// The points of the curve at the roots of `n` in its domain that `keep` accepts, the
-/// other object's parameters `flat_nums/den` (correctly rounded like the coordinates);
-/// `None` when a number cannot be rounded within the budget. With `skip_start` a root
-/// at the domain's lower end is left out and its multiplicity returned (the piece on
-/// the left reports it, [`super::exact_spline::spline_points`]).
+/// The other object's parameters at a root `t` of the curve: correctly rounded, with
+/// the exact value when it is rational; `None` when one cannot be rounded in budget.
+pub(super) type OtherParams<'a> = Box<dyn FnMut(&RealRoot) -> Option<Vec<Exactly>> + 'a>;
+
+/// A correctly rounded number and its exact value when known.
+pub(super) type Exactly = (Rounded, Option<Rational>);
+
+/// Parameters that are rational functions of the curve's: `nums/den` at the root
+/// (a plane's or a line's coordinates along itself), correctly rounded like the
+/// coordinates.
+pub(super) fn ratios<'a>(nums: &'a [Polynomial], den: &'a Polynomial) -> OtherParams<'a> {
+    Box::new(move |t| nums.iter().map(|num| round_at(t, num, den)).collect())
+}
+
+/// The points of the curve at the roots of `n` in its domain that `keep` accepts, with
+/// the other object's parameters from `other`; `None` when a number cannot be rounded
+/// within the budget. With `skip_start` a root at the domain's lower end is left out
+/// and its multiplicity returned (the piece on the left reports it,
+/// [`super::exact_spline::spline_points`]).
 pub(super) fn bezier_points(
     c: &ExactBezier,
     n: &Polynomial,
-    flat_nums: &[Polynomial],
+    mut other: OtherParams<'_>,
     mut keep: impl FnMut(&mut RealRoot) -> bool,
     skip_start: bool,
     curve_first: bool,
@@ -116,13 +126,7 @@ pub(super) fn bezier_points(
             exact.push(e);
         }
         let tr = t.rounded();
-        let mut ab = Vec::new();
-        let mut ab_exact = Vec::new();
-        for num in flat_nums {
-            let (r, e) = round_at(&t, num, &c.den)?;
-            ab.push(r);
-            ab_exact.push(e);
-        }
+        let (ab, ab_exact): (Vec<Rounded>, Vec<Option<Rational>>) = other(&t)?.into_iter().unzip();
         let tv = [tr];
         let (first, second) = if curve_first {
             (&tv[..], &ab[..])
@@ -186,7 +190,7 @@ pub(crate) fn spline_plane(
         bezier_points(
             c,
             &height(c),
-            &plane_nums,
+            ratios(&plane_nums, &c.den),
             |_| true,
             skip_start,
             curve_first,

@@ -452,7 +452,7 @@ pub(super) fn plane_conic(shape: &Shape) -> Option<PlaneConic> {
 /// Two plane shapes of which one is a conic and the other a 2D line, segment or
 /// conic; `None` for other pairs.
 pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer>, GeomError>> {
-    if let Some(r) = bezier_line(a, b) {
+    if let Some(r) = spline_pair(a, b) {
         return Some(Ok(r));
     }
     if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
@@ -469,20 +469,33 @@ pub(crate) fn plane_pair(a: &Shape, b: &Shape) -> Option<Result<Certified<Answer
     Some(intersect_conic_conic(&ca.form, &cb.form).map(|cut| conics_answer(&ca, &cb, cut)))
 }
 
-/// A 2D line or segment against a Bézier or NURBS curve, in either order
-/// ([`super::bezier_line2`]); `None` for other pairs or when not decided exactly.
-fn bezier_line(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
+/// A 2D line or segment ([`super::bezier_line2`]) or a whole conic
+/// ([`super::bezier_conic2`]) against a Bézier or NURBS curve, in either order; `None`
+/// for other pairs or when not decided exactly.
+fn spline_pair(a: &Shape, b: &Shape) -> Option<Certified<Answer>> {
     let exact = |c: &AnyCurve2| match c {
         AnyCurve2::Bezier(c) => Some(ExactCurve::bezier(c)),
         AnyCurve2::Nurbs(c) => Some(ExactCurve::nurbs(c)),
         _ => None,
     };
-    let (line, curve, curve_first) = match (a, b) {
-        (Shape::Curve2(c), l) => (line2(l)?, exact(c)?, true),
-        (l, Shape::Curve2(c)) => (line2(l)?, exact(c)?, false),
-        _ => return None,
+    let as_curve = |s: &Shape| match s {
+        Shape::Curve2(c) => exact(c),
+        _ => None,
     };
-    super::bezier_line2::spline_line2(&curve, &line.o, &line.d, line.range.as_ref(), curve_first)
+    let (curve, other, curve_first) = match as_curve(a) {
+        Some(c) => (c, b, true),
+        None => (as_curve(b)?, a, false),
+    };
+    if let Some(line) = line2(other) {
+        return super::bezier_line2::spline_line2(
+            &curve,
+            &line.o,
+            &line.d,
+            line.range.as_ref(),
+            curve_first,
+        );
+    }
+    super::bezier_conic2::spline_conic2(&curve, &plane_conic(other)?, curve_first)
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {
