@@ -9,6 +9,7 @@ use rug::Rational;
 
 use crate::error::GeomError;
 use crate::num::parse::rational_from_f64;
+use crate::num::MpfrInterval;
 
 /// `Σ cᵢ xⁱ` with exact rational coefficients, lowest degree first. The stored vector
 /// has no trailing zeros, so the zero polynomial has no coefficients.
@@ -100,6 +101,18 @@ impl Polynomial {
         for c in self.coeffs.iter().rev() {
             acc *= x;
             acc += c;
+        }
+        acc
+    }
+
+    /// An enclosure of the values over `x` at `bits` of precision: Horner's scheme in
+    /// MPFR interval arithmetic, each coefficient enclosed outward
+    /// ([`MpfrInterval::from_rational`]) and every operation rounded outward, so the
+    /// result holds `p(ξ)` for every `ξ ∈ x`.
+    pub fn enclose(&self, x: &MpfrInterval, bits: u32) -> MpfrInterval {
+        let mut acc = MpfrInterval::from_rational(&Rational::new(), bits);
+        for c in self.coeffs.iter().rev() {
+            acc = acc.mul(x).add(&MpfrInterval::from_rational(c, bits));
         }
         acc
     }

@@ -18,7 +18,7 @@
 use rug::Rational;
 use std::cmp::Ordering;
 
-use super::bezier_plane::bezier_points;
+use super::bezier_plane::{bezier_points, ratios};
 use super::exact_spline::{spline_points, ExactBezier, ExactCurve};
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::RealRoot;
@@ -64,7 +64,7 @@ pub(crate) fn spline_line2(
         bezier_points(
             c,
             &g,
-            std::slice::from_ref(&s),
+            ratios(std::slice::from_ref(&s), &c.den, deadline),
             keep,
             skip_start,
             curve_first,

@@ -38,7 +38,7 @@ fn round_at(
     num: &Polynomial,
     den: &Polynomial,
     deadline: Option<std::time::Instant>,
-) -> Option<(Rounded, Option<Rational>)> {
+) -> Option<Exactly> {
     if let Some(x) = t.exact() {
         let v = num.eval(x) / den.eval(x);
         return Some((round_rational(&v), Some(v)));
@@ -90,16 +90,38 @@ fn straddled_double(q: &RatInterval) -> Option<Rational> {
     (q.lo <= d && d <= q.hi).then_some(d)
 }
 
-/// The points of the curve at the roots of `n` in its domain that `keep` accepts, the
-/// other object's parameters `flat_nums/den` (correctly rounded like the coordinates);
-/// `None` when a number cannot be rounded within the budget. With `skip_start` a root
-/// at the domain's lower end is left out and its multiplicity returned (the piece on
-/// the left reports it, [`super::exact_spline::spline_points`]). Rounding stops at
-/// `deadline` ([`round_at`]).
+/// The other object's parameters at a root `t` of the curve: correctly rounded, with
+/// the exact value when it is rational; `None` when one cannot be rounded in budget.
+pub(super) type OtherParams<'a> = Box<dyn FnMut(&RealRoot) -> Option<Vec<Exactly>> + 'a>;
+
+/// A correctly rounded number and its exact value when known.
+pub(super) type Exactly = (Rounded, Option<Rational>);
+
+/// Parameters that are rational functions of the curve's: `nums/den` at the root
+/// (a plane's or a line's coordinates along itself), correctly rounded like the
+/// coordinates, stopping at `deadline` ([`round_at`]).
+pub(super) fn ratios<'a>(
+    nums: &'a [Polynomial],
+    den: &'a Polynomial,
+    deadline: Option<std::time::Instant>,
+) -> OtherParams<'a> {
+    Box::new(move |t| {
+        nums.iter()
+            .map(|num| round_at(t, num, den, deadline))
+            .collect()
+    })
+}
+
+/// The points of the curve at the roots of `n` in its domain that `keep` accepts, with
+/// the other object's parameters from `other`; `None` when a number cannot be rounded
+/// within the budget. With `skip_start` a root at the domain's lower end is left out
+/// and its multiplicity returned (the piece on the left reports it,
+/// [`super::exact_spline::spline_points`]). Rounding stops at `deadline`
+/// ([`round_at`]).
 pub(super) fn bezier_points(
     c: &ExactBezier,
     n: &Polynomial,
-    flat_nums: &[Polynomial],
+    mut other: OtherParams<'_>,
     mut keep: impl FnMut(&mut RealRoot) -> bool,
     skip_start: bool,
     curve_first: bool,
@@ -124,13 +146,7 @@ pub(super) fn bezier_points(
             exact.push(e);
         }
         let tr = t.rounded();
-        let mut ab = Vec::new();
-        let mut ab_exact = Vec::new();
-        for num in flat_nums {
-            let (r, e) = round_at(&t, num, &c.den, deadline)?;
-            ab.push(r);
-            ab_exact.push(e);
-        }
+        let (ab, ab_exact): (Vec<Rounded>, Vec<Option<Rational>>) = other(&t)?.into_iter().unzip();
         let tv = [tr];
         let (first, second) = if curve_first {
             (&tv[..], &ab[..])
@@ -196,7 +212,7 @@ pub(crate) fn spline_plane(
         bezier_points(
             c,
             &height(c),
-            &plane_nums,
+            ratios(&plane_nums, &c.den, deadline),
             |_| true,
             skip_start,
             curve_first,

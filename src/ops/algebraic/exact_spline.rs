@@ -24,6 +24,7 @@ use crate::curve::bezier::Bezier;
 use crate::curve::nurbs::NurbsCurve;
 use crate::curve::Curve;
 use crate::ops::answer::Point;
+use crate::ops::rational::QuadricForm;
 
 /// `Σ cᵢ Bᵢⁿ(t)` in the power basis, exactly.
 fn bernstein(c: &[Rational]) -> Polynomial {
@@ -79,6 +80,22 @@ impl ExactBezier {
         let mut p = self.den.scale(c);
         for (num, ak) in self.nums.iter().zip(a) {
             p = &p + &num.scale(ak);
+        }
+        p
+    }
+
+    /// `W(t)²·F(X(t))` for the quadric form `F(x) = xᵀAx + 2bᵀx + c₀`
+    /// (OPERATIONS.md §1.6): `Σ aᵢⱼNᵢNⱼ + 2W·Σ bᵢNᵢ + c₀W²`, whose real roots in the
+    /// domain are the curve's points on the quadric (`W > 0`).
+    pub(super) fn quadric<const D: usize>(&self, f: &QuadricForm<D>) -> Polynomial {
+        let mut p = (&self.den * &self.den).scale(f.constant());
+        let two = Rational::from(2);
+        for (i, ni) in self.nums.iter().enumerate().take(D) {
+            let b2 = Rational::from(&f.linear()[i] * &two);
+            p = &p + &(&self.den * ni).scale(&b2);
+            for (j, nj) in self.nums.iter().enumerate().take(D) {
+                p = &p + &(ni * nj).scale(&f.matrix()[i][j]);
+            }
         }
         p
     }
@@ -177,9 +194,19 @@ fn span_piece<const D: usize>(
 }
 
 /// The exact curve parameter of a reported point (`None`: irrational).
-fn exact_t(p: &Point, curve_first: bool) -> Option<&Rational> {
-    let e = p.exact.as_ref()?;
-    e.params.get(usize::from(!curve_first))?.first()
+/// True if the curve's parameter of `p` is exactly `x` (a double: a knot or a domain
+/// end). Only an exact root has a one-point parameter box; an isolated irrational
+/// root's box has width, so it never passes for a knot whatever its estimate (the
+/// other object's parameters need not be exact, e.g. a circle's angle).
+fn at(p: &Point, curve_first: bool, x: &Rational) -> bool {
+    let Some(b) = p
+        .param_box
+        .as_ref()
+        .and_then(|b| b.get(usize::from(!curve_first)))
+    else {
+        return false;
+    };
+    matches!(b.first(), Some([lo, hi]) if lo == hi && Rational::from_f64(*lo).as_ref() == Some(x))
 }
 
 /// The points of every piece, each shared knot root and the seam of a closed curve
@@ -195,7 +222,7 @@ pub(super) fn spline_points(
     for (k, c) in curve.pieces.iter().enumerate() {
         let (mut found, start) = piece(c, k > 0)?;
         if let (Some(m), Some(last)) = (start, points.last_mut()) {
-            if exact_t(last, curve_first) == Some(&c.domain.0) {
+            if at(last, curve_first, &c.domain.0) {
                 merge_multiplicity(last, m);
             }
         }
@@ -204,7 +231,7 @@ pub(super) fn spline_points(
     let (Some(first), Some(last)) = (curve.pieces.first(), curve.pieces.last()) else {
         return Some(points);
     };
-    let at = |p: &Point, x: &Rational| exact_t(p, curve_first) == Some(x);
+    let at = |p: &Point, x: &Rational| at(p, curve_first, x);
     if curve.closed
         && points.len() >= 2
         && at(&points[0], &first.domain.0)

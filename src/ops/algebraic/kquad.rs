@@ -61,14 +61,6 @@ enum Kind {
     Pair,
 }
 
-fn eval(p: &Polynomial, k: &MpfrInterval, bits: u32) -> MpfrInterval {
-    let mut acc = MpfrInterval::from_rational(&Rational::new(), bits);
-    for c in p.coeffs().iter().rev() {
-        acc = acc.mul(k).add(&MpfrInterval::from_rational(c, bits));
-    }
-    acc
-}
-
 /// `q` with `num = q·den` as polynomials, if any (`den ≢ 0`).
 fn ratio(num: &Polynomial, den: &Polynomial) -> Option<Rational> {
     let i = den.degree()?;
@@ -164,9 +156,9 @@ fn attempt(
     bits: u32,
 ) -> Option<Vec<(MpfrInterval, Option<Rational>)>> {
     let (a, b, c) = (
-        eval(&q.a, k, bits),
-        eval(&q.b, k, bits),
-        eval(&q.c, k, bits),
+        &q.a.enclose(k, bits),
+        &q.b.enclose(k, bits),
+        &q.c.enclose(k, bits),
     );
     let roots = if exact.iter().all(Option::is_some) {
         exact
@@ -181,7 +173,7 @@ fn attempt(
             }
             Kind::Double if !a.contains_zero() => vec![b.neg().div(&a)],
             Kind::Pair if !a.contains_zero() => {
-                let d = eval(disc, k, bits);
+                let d = disc.enclose(k, bits);
                 if d.contains_zero() {
                     return None;
                 }

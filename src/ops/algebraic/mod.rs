@@ -15,6 +15,7 @@
 //! 1e-300 to 1e300 are handled exactly (nothing overflows in rationals).
 
 mod apex_line;
+mod bezier_conic2;
 mod bezier_line2;
 mod bezier_plane;
 mod bivariate;

@@ -459,7 +459,7 @@ pub(crate) fn plane_pair(
     b: &Shape,
     deadline: Option<std::time::Instant>,
 ) -> Option<Result<Certified<Answer>, GeomError>> {
-    if let Some(r) = bezier_line(a, b, deadline) {
+    if let Some(r) = spline_pair(a, b, deadline) {
         return Some(Ok(r));
     }
     if let (Some(line), Some(conic)) = (line2(a), plane_conic(b)) {
@@ -479,9 +479,10 @@ pub(crate) fn plane_pair(
     )
 }
 
-/// A 2D line or segment against a Bézier or NURBS curve, in either order
-/// ([`super::bezier_line2`]); `None` for other pairs or when not decided exactly.
-fn bezier_line(
+/// A 2D line or segment ([`super::bezier_line2`]) or a whole conic
+/// ([`super::bezier_conic2`]) against a Bézier or NURBS curve, in either order; `None`
+/// for other pairs or when not decided exactly (or not before `deadline`).
+fn spline_pair(
     a: &Shape,
     b: &Shape,
     deadline: Option<std::time::Instant>,
@@ -491,19 +492,25 @@ fn bezier_line(
         AnyCurve2::Nurbs(c) => Some(ExactCurve::nurbs(c)),
         _ => None,
     };
-    let (line, curve, curve_first) = match (a, b) {
-        (Shape::Curve2(c), l) => (line2(l)?, exact(c)?, true),
-        (l, Shape::Curve2(c)) => (line2(l)?, exact(c)?, false),
-        _ => return None,
+    let as_curve = |s: &Shape| match s {
+        Shape::Curve2(c) => exact(c),
+        _ => None,
     };
-    super::bezier_line2::spline_line2(
-        &curve,
-        &line.o,
-        &line.d,
-        line.range.as_ref(),
-        curve_first,
-        deadline,
-    )
+    let (curve, other, curve_first) = match as_curve(a) {
+        Some(c) => (c, b, true),
+        None => (as_curve(b)?, a, false),
+    };
+    if let Some(line) = line2(other) {
+        return super::bezier_line2::spline_line2(
+            &curve,
+            &line.o,
+            &line.d,
+            line.range.as_ref(),
+            curve_first,
+            deadline,
+        );
+    }
+    super::bezier_conic2::spline_conic2(&curve, &plane_conic(other)?, curve_first, deadline)
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {

@@ -166,20 +166,32 @@ impl Ellipse2 {
         d: &[Rational; 2],
         s: &RealRoot,
     ) -> Option<Param> {
+        let nums = [0, 1].map(|i| affine(&o[i], &d[i]));
+        self.curve_point(&nums, &Polynomial::constant(Rational::from(1)), s)
+    }
+
+    /// `t` of the point `nums(s)/den(s)` of a rational curve at the root `s`, where
+    /// `den(s) > 0` (a line: `den = 1`; a Bézier or NURBS piece, §1.5), correctly
+    /// rounded. The signs of `x − c_x`, `y − c_y` are those of `numᵢ − cᵢ·den` at `s`,
+    /// decided exactly; the coordinates are enclosed by evaluating the polynomials over
+    /// an MPFR enclosure of `s` ([`Polynomial::enclose`]).
+    pub(crate) fn curve_point(
+        &self,
+        nums: &[Polynomial; 2],
+        den: &Polynomial,
+        s: &RealRoot,
+    ) -> Option<Param> {
         let c = self
             .center
             .map(|x| Rational::from_f64(x).unwrap_or_default());
         let mut root = s.clone();
-        let mut sign =
-            |i: usize| sign_at_root(&mut root, &affine(&Rational::from(&o[i] - &c[i]), &d[i]));
+        let mut sign = |i: usize| sign_at_root(&mut root, &(&nums[i] - &den.scale(&c[i])));
         let (sx, sy) = (sign(0), sign(1));
         let mut s_enc = s.clone();
         angle(sy, sx, |bits| {
             let ss = enclose_root(&mut s_enc, bits);
-            let p = std::array::from_fn(|i| {
-                MpfrInterval::from_rational(&o[i], bits)
-                    + ss.clone() * MpfrInterval::from_rational(&d[i], bits)
-            });
+            let w = den.enclose(&ss, bits);
+            let p = std::array::from_fn(|i| nums[i].enclose(&ss, bits) / w.clone());
             self.local(p, bits)
         })
     }
