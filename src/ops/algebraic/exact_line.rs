@@ -14,32 +14,44 @@ pub(super) struct ExactLine<const D: usize> {
 }
 
 /// The angle of `(x, y)` in `[0, 2π)`, enclosed: `atan2` or, near its branch cut on the
-/// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0)` shifted by
-/// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure.
+/// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0]` shifted by
+/// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure ([`param`]
+/// reports it in the domain).
 pub(super) fn angle(y: &Interval, x: &Interval) -> Interval {
     let pi = x.pi_like();
     let direct = y.atan2(x);
     let across = y.neg().atan2(&x.neg()) + pi;
     if across.width() < direct.width() {
         across
-    } else if direct.hi() < 0.0 {
+    } else if direct.hi() <= 0.0 {
         direct + pi + pi
     } else {
         direct
     }
 }
 
-/// Estimate and enclosure of an angle parameter, the estimate in `[0, 2π)`; an empty
-/// enclosure (the angle of the origin) stands for the whole circle.
+/// Estimate and enclosure of an angle parameter, both in the domain `[0, 2π]` (issue 14
+/// item 2: a box in `(−π, π]` with its estimate in `[0, 2π)` put the estimate outside
+/// its box, and the box outside the domain); an empty enclosure (the angle of the
+/// origin) stands for the whole circle. A box that straddles the seam holds the angle
+/// in `[2π + lo, 2π] ∪ [0, hi]`: its hull in the domain is the whole circle, reported
+/// as that (the point's own box stays tight).
 pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
+    // 2π, enclosed (outward: `pi_like` encloses π).
+    let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
     if b.is_empty() {
         // A point on the axis (a pole): every angle is its parameter.
-        let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
         return (0.0, [0.0, two_pi.hi()]);
     }
-    let mut m = b.midpoint();
-    if m < 0.0 {
-        m += 2.0 * std::f64::consts::PI;
+    let b = if b.hi() <= 0.0 { b + two_pi } else { b };
+    let m = b.midpoint();
+    if b.lo() < 0.0 || b.hi() > two_pi.hi() {
+        let m = if m < 0.0 {
+            m + std::f64::consts::TAU
+        } else {
+            m
+        };
+        return (m.clamp(0.0, two_pi.hi()), [0.0, two_pi.hi()]);
     }
     (m, [b.lo(), b.hi()])
 }
