@@ -202,11 +202,11 @@ fn points(ps: &mut Vec<Point>, domains: &[Option<Vec<ParamDomain>>], drop: bool)
 
 fn curves(c: &mut CurvesAnswer, domains: &[Option<Vec<ParamDomain>>], undecided: bool) -> bool {
     let mut sound = points(&mut c.points, domains, undecided);
-    c.singular_points.retain_mut(|s| {
-        let ok = point(&mut s.point, domains);
-        sound &= ok || s.status == Status::Undecided;
-        ok || s.status != Status::Undecided
-    });
+    // Singular points stay (curve ends refer to them by index); an unsound one only
+    // counts against a certified one.
+    for s in &mut c.singular_points {
+        sound &= point(&mut s.point, domains) || s.status == Status::Undecided;
+    }
     for curve in &mut c.curves {
         let finite = |v: &crate::ops::answer::CurveVertex| {
             !v.xyz

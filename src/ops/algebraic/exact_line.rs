@@ -23,11 +23,16 @@ pub(super) fn angle(y: &Interval, x: &Interval) -> Interval {
     let across = y.neg().atan2(&x.neg()) + pi;
     if across.width() < direct.width() {
         across
-    } else if direct.hi() <= 0.0 {
+    } else if below_zero(&direct) {
         direct + pi + pi
     } else {
         direct
     }
+}
+
+/// The angle box lies in `[−π, 0]` and is not the exact angle 0 (`[0, 0]` stays 0).
+fn below_zero(b: &Interval) -> bool {
+    b.hi() < 0.0 || (b.hi() == 0.0 && b.lo() < 0.0)
 }
 
 /// Estimate and enclosure of an angle parameter, both in the domain `[0, 2π]` (issue 14
@@ -43,7 +48,7 @@ pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
         // A point on the axis (a pole): every angle is its parameter.
         return (0.0, [0.0, two_pi.hi()]);
     }
-    let b = if b.hi() <= 0.0 { b + two_pi } else { b };
+    let b = if below_zero(&b) { b + two_pi } else { b };
     let m = b.midpoint();
     if b.lo() < 0.0 || b.hi() > two_pi.hi() {
         let m = if m < 0.0 {
