@@ -6,13 +6,14 @@
 //!    reaches `±∞` (a value beyond the double range);
 //! 2. every estimate lies in its own enclosure: one outside is moved to the nearest
 //!    point of the box (a missing one is the box midpoint);
-//! 3. every `param_box` lies in its object's parameter domain: a periodic coordinate
-//!    is shifted by whole periods (an enclosure of the exact period, so the shifted
-//!    box still holds the parameter modulo the period); a box that straddles the seam
-//!    after the shift is the union of its two pieces `[a, P] ∪ [0, b]`, whose hull in
-//!    the domain is the whole period — reported as that (true, and the point's `box`
-//!    keeps its own tightness). A non-periodic coordinate is clipped to the domain: an
-//!    answer is a point of the object, so its parameter lies in the domain.
+//! 3. every `param_box` meets its object's parameter domain: a periodic coordinate
+//!    whose box lies outside the domain is shifted by whole periods (an enclosure of
+//!    the exact period, so the shifted box still holds the parameter modulo the
+//!    period) until its midpoint lies in the domain; a box that straddles the seam is
+//!    an arc across it and keeps its tightness (`[−ε, ε]` means `[2π − ε, 2π] ∪
+//!    [0, ε]`), the estimate shifted by a period into the box if it lies a period
+//!    away. A non-periodic coordinate is clipped to the domain: an answer is a point
+//!    of the object, so its parameter lies in the domain.
 //!
 //! A point whose numbers cannot be formed (a `NaN` with no box to take one from) is
 //! left out of an `undecided` answer; in a certified answer it is kept and the answer
@@ -132,23 +133,28 @@ fn into_domain(x: &mut f64, b: &mut Bounds, d: &ParamDomain) {
         }
         return;
     }
-    if lo <= b[0] && b[1] <= hi {
+    let p = d.period();
+    let mid = midpoint(*b);
+    if lo <= mid && mid <= hi {
+        // In the domain, or an arc across the seam: kept; the estimate into the box.
+        if x.is_finite() && (*x < b[0] || *x > b[1]) {
+            for k in [-1.0, 1.0] {
+                let y = *x + k * p.midpoint();
+                if b[0] <= y && y <= b[1] {
+                    *x = y;
+                }
+            }
+        }
         return;
     }
-    let p = d.period();
     let whole = [d.bounds[0], hi];
-    let k = ((midpoint(*b) - d.bounds[0]) / p.midpoint()).floor();
+    let k = ((mid - d.bounds[0]) / p.midpoint()).floor();
     if !k.is_finite() || b[1] - b[0] >= p.lo() {
         *b = whole;
         return;
     }
     let shifted = Interval::from_bounds(b[0], b[1]) - Interval::point(k) * p;
-    *b = if lo <= shifted.lo() && shifted.hi() <= hi {
-        [shifted.lo(), shifted.hi()]
-    } else {
-        // Straddles the seam: the hull of both pieces in the domain is the period.
-        whole
-    };
+    *b = [shifted.lo(), shifted.hi()];
     if x.is_finite() {
         *x -= k * p.midpoint();
     }
@@ -279,11 +285,14 @@ mod tests {
     }
 
     #[test]
-    fn a_box_across_the_seam_becomes_the_whole_turn() {
-        let (mut x, mut b) = (0.0, [-0.1, 0.1]);
+    fn a_box_across_the_seam_stays_a_tight_arc() {
+        let (mut x, mut b) = (TAU - 0.05, [-0.1, 0.1]);
         into_domain(&mut x, &mut b, &turn());
-        assert_eq!(b, [0.0, next_up(TAU)]);
-        assert!(settle(&mut x, &mut b) && x == 0.0);
+        assert_eq!(b, [-0.1, 0.1]);
+        assert!(settle(&mut x, &mut b) && (x + 0.05).abs() < 1e-12, "{x}");
+        let (mut x, mut b) = (1.0, [-TAU - 0.1, -TAU + 0.1]);
+        into_domain(&mut x, &mut b, &turn());
+        assert!(b[0] <= 0.0 && 0.0 <= b[1] && b[1] < 0.11, "{b:?}");
     }
 
     #[test]

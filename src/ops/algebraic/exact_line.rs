@@ -35,12 +35,12 @@ fn below_zero(b: &Interval) -> bool {
     b.hi() < 0.0 || (b.hi() == 0.0 && b.lo() < 0.0)
 }
 
-/// Estimate and enclosure of an angle parameter, both in the domain `[0, 2π]` (issue 14
-/// item 2: a box in `(−π, π]` with its estimate in `[0, 2π)` put the estimate outside
-/// its box, and the box outside the domain); an empty enclosure (the angle of the
-/// origin) stands for the whole circle. A box that straddles the seam holds the angle
-/// in `[2π + lo, 2π] ∪ [0, hi]`: its hull in the domain is the whole circle, reported
-/// as that (the point's own box stays tight).
+/// Estimate and enclosure of an angle parameter in the domain `[0, 2π]` (issue 14
+/// item 2: a box in `(−π, 0]` with its estimate in `[0, 2π)` put the estimate outside
+/// its box, and the box outside the domain; such a box is shifted by 2π); an empty
+/// enclosure (the angle of the origin) stands for the whole circle. A box that
+/// straddles the seam `0` is an arc across it and stays as tight as it is (its lower
+/// end below 0 means `2π + lo`), with the estimate inside it and not below 0.
 pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
     // 2π, enclosed (outward: `pi_like` encloses π).
     let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
@@ -49,14 +49,6 @@ pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
         return (0.0, [0.0, two_pi.hi()]);
     }
     let b = if below_zero(&b) { b + two_pi } else { b };
-    let m = b.midpoint();
-    if b.lo() < 0.0 || b.hi() > two_pi.hi() {
-        let m = if m < 0.0 {
-            m + std::f64::consts::TAU
-        } else {
-            m
-        };
-        return (m.clamp(0.0, two_pi.hi()), [0.0, two_pi.hi()]);
-    }
+    let m = b.midpoint().max(0.0).clamp(b.lo(), b.hi());
     (m, [b.lo(), b.hi()])
 }
