@@ -29,6 +29,36 @@ pub struct Frame {
     cached: [[f64; 3]; 3],
 }
 
+/// `v` scaled by a power of two so that its largest component lies in `[1, 2)`, when
+/// that scaling is exact in every component (else `v` as given). The frame is
+/// invariant under positive scalings of `axis` and of `ref` (`Z = a/|a|`, `X = w/|w|`
+/// with `w` homogeneous in `a` and in `r`), so the scaled inputs give the exact same
+/// frame; without it `|a|²` overflows for components beyond ~1e154 (issue 14 item 4:
+/// an axis component −4.6e294 made every coordinate of a parabola `NaN`) and
+/// underflows to 0 below ~1e-162.
+fn balanced(v: [f64; 3]) -> [f64; 3] {
+    let m = v.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    if m == 0.0 || !m.is_finite() || (1.0..2.0).contains(&m) {
+        return v;
+    }
+    // m = f·2^e with f in [1, 2): e from the bits (subnormals through a first scaling).
+    let exponent = |x: f64| ((x.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let e = if m < f64::MIN_POSITIVE {
+        exponent(m * 2f64.powi(64)) - 64
+    } else {
+        exponent(m)
+    };
+    // 2^−e in two factors, each a normal double.
+    let (s1, s2) = (2f64.powi(-e / 2), 2f64.powi(-e - (-e / 2)));
+    let scaled = v.map(|x| x * s1 * s2);
+    let exact = scaled.iter().zip(&v).all(|(y, x)| y / s2 / s1 == *x);
+    if exact {
+        scaled
+    } else {
+        v
+    }
+}
+
 /// `a × b = 0` decided exactly (the inputs are exact doubles): `a` and `b` are
 /// parallel, or one of them is zero.
 pub fn exactly_parallel(a: &[f64; 3], b: &[f64; 3]) -> bool {
@@ -123,8 +153,8 @@ impl Frame {
     }
 
     fn compute_axes<T: Real>(&self, like: &T) -> [[T; 3]; 3] {
-        let a = lift(like, &self.axis);
-        let r = lift(like, &self.reference_or_default());
+        let a = lift(like, &balanced(self.axis));
+        let r = lift(like, &balanced(self.reference_or_default()));
         let a_sq = norm_sq(&a);
         let a_len = a_sq.clone().sqrt();
         // w = r|a|² − (r·a)a, orthogonal to a.

@@ -33,6 +33,7 @@ pub mod nearest;
 pub mod options;
 pub mod polyhedron;
 pub mod project;
+pub mod promise;
 pub(crate) mod rational;
 pub mod section;
 pub mod shape;

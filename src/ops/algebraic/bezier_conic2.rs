@@ -51,6 +51,7 @@ pub(super) fn spline_conic2(
             |_| true,
             skip_start,
             curve_first,
+            deadline,
         )
     })?;
     Some(Certified::exact(

@@ -23,10 +23,13 @@ use crate::error::GeomError;
 use crate::ops::answer::Answer;
 use crate::ops::beyond_range::exact_beyond_range;
 use crate::ops::options::{Options, ProjectOptions};
+use crate::ops::promise;
 use crate::ops::shape::{Position, Shape};
 
 // Each entry point answers again with exact rationals when a number of its answer is
-// beyond the double range ([`exact_beyond_range`]), so no value is ever lost.
+// beyond the double range ([`exact_beyond_range`]), so no value is ever lost, and
+// enforces the promise on every reported number ([`promise::keep`]: no NaN, every
+// estimate in its box, every parameter box in its object's domain).
 
 /// Every common point (or line, segment, coincidence) of two or three shapes,
 /// certified. Errors name the offending shape as `objects[i]`.
@@ -47,7 +50,10 @@ use crate::ops::shape::{Position, Shape};
 /// # Ok::<(), GeomError>(())
 /// ```
 pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, GeomError> {
-    exact_beyond_range(opts, |o| intersect::intersect(shapes, o))
+    let mut r = exact_beyond_range(opts, |o| intersect::intersect(shapes, o))?;
+    let domains: Vec<_> = shapes.iter().map(promise::domains).collect();
+    promise::keep(&mut r, &domains);
+    Ok(r)
 }
 
 /// The projections of `point` onto `onto`: every foot of a perpendicular (points where
@@ -74,13 +80,15 @@ pub fn project(
     onto: &Shape,
     how: &ProjectOptions,
 ) -> Result<Certified<Answer>, GeomError> {
-    exact_beyond_range(&how.options, |o| {
+    let mut r = exact_beyond_range(&how.options, |o| {
         let how = ProjectOptions {
             options: o.clone(),
             ..how.clone()
         };
         project::project(point, onto, &how)
-    })
+    })?;
+    promise::keep(&mut r, &[promise::domains(onto)]);
+    Ok(r)
 }
 
 /// The side of `point` relative to the closed `shell` (`inside`, `on`, `outside`),
@@ -101,5 +109,7 @@ pub fn classify(
     shell: &Shape,
     opts: &Options,
 ) -> Result<Certified<Answer>, GeomError> {
-    exact_beyond_range(opts, |o| classify::classify(point, shell, o))
+    let mut r = exact_beyond_range(opts, |o| classify::classify(point, shell, o))?;
+    promise::keep(&mut r, &[promise::domains(shell)]);
+    Ok(r)
 }
