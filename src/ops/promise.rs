@@ -279,7 +279,9 @@ mod tests {
         let (mut x, mut b) = (7.0 * PI / 4.0, [-PI / 2.0, 0.0]);
         into_domain(&mut x, &mut b, &turn());
         assert!(settle(&mut x, &mut b));
-        assert!(b[0] >= 0.0 && b[1] <= next_up(TAU), "{b:?}");
+        // The shifted box may reach an ulp or two past 2π (the period is enclosed): an
+        // arc across the seam, still holding 7π/4 and no wider than the input.
+        assert!(b[0] >= 0.0 && b[1] <= next_up(next_up(TAU)), "{b:?}");
         assert!(b[0] <= 1.5 * PI && b[1] >= TAU - 1e-12, "{b:?}");
         assert!(b[0] <= x && x <= b[1]);
     }

@@ -20,19 +20,22 @@
 
 use super::bezier_plane::{bezier_points, Exactly, OtherParams};
 use super::exact_spline::{spline_points, ExactBezier, ExactCurve};
-use super::pairs::PlaneConic;
+use super::params::Ellipse2;
 use crate::certificate::{Arithmetic, Certified};
 use crate::num::round::Rounded;
 use crate::ops::answer::Answer;
+use crate::ops::rational::QuadricForm;
 
-/// A Bézier or NURBS curve (as exact pieces) against a whole plane conic.
+/// A Bézier or NURBS curve (as exact pieces) against a whole plane conic `form = 0`,
+/// whose angle is reported when `param` gives its centre and semi-axes.
 pub(super) fn spline_conic2(
     curve: &ExactCurve,
-    conic: &PlaneConic,
+    form: &QuadricForm<2>,
+    param: Option<Ellipse2>,
     curve_first: bool,
     deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
-    let on = |c: &ExactBezier| c.quadric(&conic.form);
+    let on = |c: &ExactBezier| c.quadric(form);
     let bits = curve.max_bits(on);
     let lying = curve.pieces.iter().filter(|c| on(c).is_zero()).count();
     if lying == curve.pieces.len() {
@@ -47,7 +50,7 @@ pub(super) fn spline_conic2(
         bezier_points(
             c,
             &on(c),
-            angle(conic, c),
+            angle(param, c),
             |_| true,
             skip_start,
             curve_first,
@@ -63,9 +66,9 @@ pub(super) fn spline_conic2(
 
 /// The conic's angle at a root of the piece, correctly rounded (none for an implicit
 /// conic).
-fn angle<'a>(conic: &'a PlaneConic, c: &'a ExactBezier) -> OtherParams<'a> {
+fn angle(param: Option<Ellipse2>, c: &ExactBezier) -> OtherParams<'_> {
     Box::new(move |t| {
-        let Some(e) = conic.param else {
+        let Some(e) = param else {
             return Some(Vec::new());
         };
         let nums = [c.nums[0].clone(), c.nums[1].clone()];

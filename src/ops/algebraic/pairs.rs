@@ -510,7 +510,8 @@ fn spline_pair(
             deadline,
         );
     }
-    super::bezier_conic2::spline_conic2(&curve, &plane_conic(other)?, curve_first, deadline)
+    let conic = plane_conic(other)?;
+    super::bezier_conic2::spline_conic2(&curve, &conic.form, conic.param, curve_first, deadline)
 }
 
 fn conics_answer(a: &PlaneConic, b: &PlaneConic, cut: Certified<ConicCut>) -> Certified<Answer> {
