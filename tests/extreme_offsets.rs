@@ -25,6 +25,9 @@ use geocert::Certified;
 use rug::float::Constant;
 use rug::Float;
 
+/// `(u, v)` of the hit at the offset `w` along the line, if it is one.
+type UvAt = Box<dyn FnMut(&Float) -> Option<[Float; 2]>>;
+
 const BITS: u32 = 3000;
 
 fn solve(json: &str) -> Certified<Answer> {
@@ -212,7 +215,7 @@ impl Case {
         let (dx, dy) = (x0.clone() - &cx, y0.clone() - &cy);
         // Each kind: offsets `w = z − cz` of the hits, with (u, v) at each.
         let mut hits: Vec<(Float, [Float; 2])> = Vec::new();
-        let mut push_pm = |d2: Float, mut uv: Box<dyn FnMut(&Float) -> Option<[Float; 2]>>| {
+        let mut push_pm = |d2: Float, mut uv: UvAt| {
             if d2 > 0 {
                 let s = d2.sqrt();
                 for w in [-s.clone(), s] {
@@ -373,7 +376,7 @@ fn line_case(rng: &mut Rng, kind: usize) -> Case {
             let (kind, rho) = if kind == 0 {
                 (Kind::Cylinder { r }, r)
             } else {
-                let a = [-0.5, 0.25, 0.7853981633974483][rng.below(3)];
+                let a = [-0.5, 0.25, std::f64::consts::FRAC_PI_4][rng.below(3)];
                 (Kind::Cone { r, a }, (r + a.tan() * zeta).abs())
             };
             // ρ·(1 − gap) from the line: the two hits straddle the seam at w = 0.
@@ -552,7 +555,7 @@ fn projections_onto_conics_with_extreme_parameters() {
         let q = [small(&mut rng), small(&mut rng), small(&mut rng)];
         let nearest = i % 2 == 0;
         let onto = match i % 6 {
-            0 | 1 | 2 | 3 => format!(
+            0..=3 => format!(
                 r#"{{"type":"parabola","vertex":{vertex:?},"axis":{axis:?},"p":{p:e},"range":[-2,2]}}"#
             ),
             4 => format!(

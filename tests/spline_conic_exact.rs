@@ -53,9 +53,9 @@ fn check(
         assert!(holds(&pb[0][0], t), "{what}: t = {t} not in {:?}", pb[0]);
         assert_eq!(p.params[0][0], t.to_f64(), "{what}: t correctly rounded");
         let x = point(t);
-        for k in 0..2 {
-            assert!(holds(&p.bounds[k], &x[k]), "{what}: coordinate {k}");
-            assert_eq!(p.xyz[k], x[k].to_f64(), "{what}: coordinate {k} rounded");
+        for (k, xk) in x.iter().enumerate() {
+            assert!(holds(&p.bounds[k], xk), "{what}: coordinate {k}");
+            assert_eq!(p.xyz[k], xk.to_f64(), "{what}: coordinate {k} rounded");
         }
         if let Some((c, axes)) = circle {
             let (cy, cx) = (
@@ -277,9 +277,9 @@ fn a_rounded_nurbs_circle_touches_its_circle_at_the_four_knots() {
                 let k = t.to_f64();
                 let exact = |x: f64, y: f64| [fl(x * r), fl(y * r)];
                 match k {
-                    x if x == 0.0 => exact(1.0, 0.0),
-                    x if x == 0.25 => exact(0.0, 1.0),
-                    x if x == 0.5 => exact(-1.0, 0.0),
+                    0.0 => exact(1.0, 0.0),
+                    0.25 => exact(0.0, 1.0),
+                    0.5 => exact(-1.0, 0.0),
                     _ => exact(0.0, -1.0),
                 }
             };

@@ -73,7 +73,7 @@ pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
             continue;
         }
         // The deadline is checked every 64 boxes (issue 20), as the budget is.
-        let late = boxes % 64 == 0 && opts.late();
+        let late = boxes.is_multiple_of(64) && opts.late();
         if boxes >= opts.max_boxes || late {
             if late {
                 stopped = crate::certify::TIME_LIMIT;

@@ -226,8 +226,9 @@ pub const KNOWN_DEFECTS: &[&str] = &[
     // crossing): each knot span is certified on its own (src/ops/certified/pieces.rs),
     // but the root's box straddles the knot and the boundary decision has no exact
     // candidate (the knot is exact, the angles are not), so it stays undecided
-    // (tests/rational_conics.rs, `nurbs_circles_in_the_plane` and
-    // `nurbs_circles_in_space_against_spheres`, the cases through a knot point).
+    // (tests/rational_conics.rs, `nurbs_circles_in_space_against_spheres`, the cases
+    // through a knot point; the plane family `nurbs_circles_in_the_plane` is decided
+    // exactly by the Bézier/NURBS × conic route and runs by default).
     // Also a line crossing the NURBS cylinder or sphere of tests/rational_patches.rs on
     // a knot line of the patch (the patch is not split into knot rectangles yet).
     "nurbs_knot_root_with_irrational_partner",

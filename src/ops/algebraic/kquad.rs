@@ -156,9 +156,9 @@ fn attempt(
     bits: u32,
 ) -> Option<Vec<(MpfrInterval, Option<Rational>)>> {
     let (a, b, c) = (
-        &q.a.enclose(k, bits),
-        &q.b.enclose(k, bits),
-        &q.c.enclose(k, bits),
+        q.a.enclose(k, bits),
+        q.b.enclose(k, bits),
+        q.c.enclose(k, bits),
     );
     let roots = if exact.iter().all(Option::is_some) {
         exact
