@@ -294,3 +294,94 @@ fn a_rounded_nurbs_circle_touches_its_circle_at_the_four_knots() {
         }
     }
 }
+
+/// The circle's equation at the rational Bézier's point, by de Casteljau on the homogeneous control points in MPFR (not the power basis the
+/// library builds its polynomial in).
+fn circle_at(ctrl: &[[f64; 2]], w: &[f64], c: [f64; 2], r: f64, t: &Float) -> Float {
+    let mut h: Vec<[Float; 3]> = ctrl
+        .iter()
+        .zip(w)
+        .map(|(p, &wi)| [fl(p[0]) * wi, fl(p[1]) * wi, fl(wi)])
+        .collect();
+    let u = fl(1) - t;
+    while h.len() > 1 {
+        h = h
+            .windows(2)
+            .map(|ab| std::array::from_fn(|k| ab[0][k].clone() * &u + ab[1][k].clone() * t))
+            .collect();
+    }
+    let [x, y, wt] = h.remove(0);
+    let dx = x / &wt - c[0];
+    let dy = y / &wt - c[1];
+    dx.clone() * &dx + dy.clone() * &dy - fl(r) * r
+}
+
+/// Random rational cubics against random circles: every sign change of the circle's
+/// equation along the curve (a 2048-cell scan in MPFR, each bracket bisected to
+/// 1024 bits), and an end point lying on the circle, lies in exactly one reported
+/// parameter box, and the points of odd multiplicity are exactly as many.
+#[test]
+fn random_rational_cubics_cross_circles_where_an_independent_scan_says() {
+    let mut g = truth_support::conics::Gen::new(2301);
+    let mut crossings = 0;
+    for i in 0..cases(120) {
+        let ctrl: Vec<[f64; 2]> = (0..4).map(|_| g.vec::<2>(-2.0, 2.0, 4)).collect();
+        let w: Vec<f64> = (0..4).map(|_| g.dyadic(0.25, 2.0, 4)).collect();
+        let (c, r) = (g.vec::<2>(-1.0, 1.0, 4), g.dyadic(0.25, 2.0, 4));
+        let bez = format!(
+            r#"{{"type":"bezier2","points":{},"weights":[{}]}}"#,
+            pts(&ctrl),
+            w.iter().map(|&x| num(x)).collect::<Vec<_>>().join(",")
+        );
+        let circ = format!(
+            r#"{{"type":"circle2","center":[{},{}],"radius":{}}}"#,
+            num(c[0]),
+            num(c[1]),
+            num(r)
+        );
+        let res = solve(&case(&bez, &circ));
+        let what = format!("case {i}: {bez} × {circ}");
+        assert_eq!(res.status, "exact", "{what}");
+        assert_eq!(res.complete, Some(true), "{what}");
+        let f = |t: &Float| circle_at(&ctrl, &w, c, r, t);
+        const CELLS: u32 = 2048;
+        let mut roots = Vec::new();
+        let mut prev = f(&fl(0));
+        if prev == 0 {
+            roots.push(fl(0)); // a control point on the circle: a root at the end
+        }
+        for k in 1..=CELLS {
+            let t = fl(k) / CELLS;
+            let v = f(&t);
+            if k == CELLS && v == 0 {
+                roots.push(t.clone());
+            }
+            if (prev < 0 && v > 0) || (prev > 0 && v < 0) {
+                let (mut lo, mut hi) = (fl(k - 1) / CELLS, t.clone());
+                let lo_neg = prev < 0;
+                for _ in 0..1000 {
+                    let mid = (lo.clone() + &hi) / 2u32;
+                    if (f(&mid) < 0) == lo_neg {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                roots.push(lo);
+            }
+            prev = v;
+        }
+        crossings += roots.len();
+        let points = res.points.as_deref().unwrap_or_default();
+        let odd = points.iter().filter(|p| p.multiplicity % 2 == 1).count();
+        assert_eq!(odd, roots.len(), "{what}: {points:?}");
+        for t in &roots {
+            let holding = points
+                .iter()
+                .filter(|p| holds(&p.param_box.as_ref().expect("param_box")[0][0], t))
+                .count();
+            assert_eq!(holding, 1, "{what}: the crossing at t = {t}");
+        }
+    }
+    assert!(crossings > 50, "the family crosses: {crossings}");
+}
