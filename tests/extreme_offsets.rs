@@ -17,40 +17,20 @@
 
 #![allow(clippy::needless_range_loop)]
 
+mod truth_support;
+
 use geocert::certificate::Status;
-use geocert::io::{position, read_cases, shape};
 use geocert::num::rng::Rng;
-use geocert::ops::{self, Answer, Point, ProjectOptions};
+use geocert::ops::{Answer, Point};
 use geocert::Certified;
 use rug::float::Constant;
 use rug::Float;
+use truth_support::front_door as solve;
 
 /// `(u, v)` of the hit at the offset `w` along the line, if it is one.
 type UvAt = Box<dyn FnMut(&Float) -> Option<[Float; 2]>>;
 
 const BITS: u32 = 3000;
-
-fn solve(json: &str) -> Certified<Answer> {
-    let read = read_cases(json).pop().expect("one case");
-    let case = read.case.expect("a valid case");
-    let options = geocert::io::options(&case).expect("options");
-    if let Some(p) = &case.point {
-        let how = ProjectOptions {
-            nearest: case.nearest,
-            direction: None,
-            options,
-        };
-        let onto = shape(case.onto.as_ref().expect("onto"), "onto").expect("shape");
-        ops::project(&position(p, "point").expect("point"), &onto, &how).expect("solves")
-    } else {
-        let shapes: Vec<_> = case
-            .objects
-            .iter()
-            .map(|o| shape(o, "objects").expect("shape"))
-            .collect();
-        ops::intersect(&shapes, &options).expect("solves")
-    }
-}
 
 fn f(x: f64) -> Float {
     Float::with_val(BITS, x)

@@ -7,38 +7,17 @@
 
 use std::process::Command;
 
+mod truth_support;
+
 use geocert::certificate::Status;
-use geocert::io::{position, read_cases, shape};
 use geocert::num::round::{next_down, next_up};
-use geocert::ops::{self, Answer, Point, ProjectOptions};
+use geocert::ops::{Answer, Point};
 use geocert::robust::rng::Rng;
 use rug::float::Constant;
 use rug::{Float, Rational};
+use truth_support::front_door as solve;
 
 const BITS: u32 = 256;
-
-/// Solve one JSON case through the library front door, as a library user would.
-fn solve(json: &str) -> geocert::Certified<Answer> {
-    let read = read_cases(json).pop().expect("one case");
-    let case = read.case.expect("a valid case");
-    let options = geocert::io::options(&case).expect("options");
-    if let Some(p) = &case.point {
-        let how = ProjectOptions {
-            nearest: case.nearest,
-            direction: None,
-            options,
-        };
-        let onto = shape(case.onto.as_ref().expect("onto"), "onto").expect("shape");
-        ops::project(&position(p, "point").expect("point"), &onto, &how).expect("solves")
-    } else {
-        let shapes: Vec<_> = case
-            .objects
-            .iter()
-            .map(|o| shape(o, "objects").expect("shape"))
-            .collect();
-        ops::intersect(&shapes, &options).expect("solves")
-    }
-}
 
 fn points(a: &Answer) -> &[Point] {
     match a {

@@ -31,6 +31,32 @@ pub fn solve(case: &str) -> CaseResult {
     solve_case(read.remove(0))
 }
 
+/// Solve one JSON case through the library front door (`ops::project` /
+/// `ops::intersect` on shapes built by `io::shape`), as a library user would.
+pub fn front_door(json: &str) -> geocert::Certified<geocert::ops::Answer> {
+    use geocert::io::{options, position, shape};
+    use geocert::ops::{self, ProjectOptions};
+    let read = read_cases(json).pop().expect("one case");
+    let case = read.case.expect("a valid case");
+    let options = options(&case).expect("options");
+    if let Some(p) = &case.point {
+        let how = ProjectOptions {
+            nearest: case.nearest,
+            direction: None,
+            options,
+        };
+        let onto = shape(case.onto.as_ref().expect("onto"), "onto").expect("shape");
+        ops::project(&position(p, "point").expect("point"), &onto, &how).expect("solves")
+    } else {
+        let shapes: Vec<_> = case
+            .objects
+            .iter()
+            .map(|o| shape(o, "objects").expect("shape"))
+            .collect();
+        ops::intersect(&shapes, &options).expect("solves")
+    }
+}
+
 /// `CASES` scaled by `GEOCERT_CURVED_CASES` (a multiplier for long local runs; the
 /// default 1 keeps each family within its share of the suite's time).
 pub fn cases(default: usize) -> usize {

@@ -36,16 +36,10 @@ pub(super) fn spline_conic2(
     deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let on = |c: &ExactBezier| c.quadric(form);
-    let bits = curve.max_bits(on);
-    let lying = curve.pieces.iter().filter(|c| on(c).is_zero()).count();
-    if lying == curve.pieces.len() {
-        let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
-        r.reason = Some("the curve lies on the conic".into());
-        return Some(r);
-    }
-    if lying > 0 {
-        return None;
-    }
+    let bits = match curve.zero_set(on, true, "the curve lies on the conic") {
+        Ok(bits) => bits,
+        Err(r) => return r.map(|r| *r),
+    };
     let points = spline_points(curve, curve_first, |c, skip_start| {
         bezier_points(
             c,

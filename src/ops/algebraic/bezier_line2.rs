@@ -37,16 +37,10 @@ pub(crate) fn spline_line2(
 ) -> Option<Certified<Answer>> {
     let perp = [-d[1].clone(), d[0].clone()];
     let side = |c: &ExactBezier| c.affine(&perp, &-dot(&perp, o));
-    let bits = curve.max_bits(side);
-    let on_line = curve.pieces.iter().filter(|c| side(c).is_zero()).count();
-    if on_line == curve.pieces.len() && range.is_none() {
-        let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
-        r.reason = Some("the curve lies on the line".into());
-        return Some(r);
-    }
-    if on_line > 0 {
-        return None;
-    }
+    let bits = match curve.zero_set(side, range.is_none(), "the curve lies on the line") {
+        Ok(bits) => bits,
+        Err(r) => return r.map(|r| *r),
+    };
     let dd = dot(d, d);
     let unit: [Rational; 2] = std::array::from_fn(|i| Rational::from(&d[i] / &dd));
     let points = spline_points(curve, curve_first, |c, skip_start| {

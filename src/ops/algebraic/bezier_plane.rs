@@ -197,16 +197,10 @@ pub(crate) fn spline_plane(
     deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let height = |c: &ExactBezier| c.affine(&plane.n, &-plane.h.clone());
-    let bits = curve.max_bits(height);
-    let flat = curve.pieces.iter().filter(|c| height(c).is_zero()).count();
-    if flat == curve.pieces.len() {
-        let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
-        r.reason = Some("the curve lies in the plane".into());
-        return Some(r);
-    }
-    if flat > 0 {
-        return None;
-    }
+    let bits = match curve.zero_set(height, true, "the curve lies in the plane") {
+        Ok(bits) => bits,
+        Err(r) => return r.map(|r| *r),
+    };
     let points = spline_points(curve, curve_first, |c, skip_start| {
         let plane_nums = plane_params(c, plane);
         bezier_points(

@@ -19,11 +19,12 @@
 
 use rug::Rational;
 
+use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::Polynomial;
 use crate::curve::bezier::Bezier;
 use crate::curve::nurbs::NurbsCurve;
 use crate::curve::Curve;
-use crate::ops::answer::Point;
+use crate::ops::answer::{Answer, Point};
 use crate::ops::rational::QuadricForm;
 
 /// `Σ cᵢ Bᵢⁿ(t)` in the power basis, exactly.
@@ -139,6 +140,31 @@ impl ExactCurve {
             pieces,
             closed: c.is_closed(),
         }
+    }
+
+    /// The curve against the zero set of `f` (a plane, a line, a conic, as the
+    /// polynomial of each piece): `Ok(bits)`, the largest coefficient size, when `f` is
+    /// not identically zero on any piece; when it is on every piece and `whole`, the
+    /// exact answer `coincident` with `reason` ("the curve lies …"); otherwise (on
+    /// some pieces only, or a bounded other object) `Err(None)`: left to the numeric
+    /// certifier.
+    pub(super) fn zero_set(
+        &self,
+        f: impl Fn(&ExactBezier) -> Polynomial,
+        whole: bool,
+        reason: &str,
+    ) -> Result<u32, Option<Box<Certified<Answer>>>> {
+        let bits = self.max_bits(&f);
+        let lying = self.pieces.iter().filter(|c| f(c).is_zero()).count();
+        if lying == self.pieces.len() && whole {
+            let mut r = Certified::exact(Answer::Coincident, Arithmetic::Rational, bits);
+            r.reason = Some(reason.into());
+            return Err(Some(Box::new(r)));
+        }
+        if lying > 0 {
+            return Err(None);
+        }
+        Ok(bits)
     }
 
     /// The largest coefficient size of `f` over the pieces (the answer's `bits`).

@@ -219,19 +219,32 @@ pub fn certify_roots_with<S: System>(
         reason.get_or_insert_with(|| "a root straddles the domain boundary".into());
     }
     seam::drop_seam_copies(sys, &mut roots, unknowns);
+    Ok(answer(roots, status, complete, bits, reason))
+}
+
+/// The certified answer of a root search: the roots sorted by parameter, the largest
+/// perturbation of a singular root, the reason only when incomplete, and `undecided`
+/// when an incomplete search certified no root at all (nothing proven). Shared by
+/// [`certify_roots_with`] and the knot-span search ([`pieces`]).
+pub(crate) fn answer(
+    mut roots: Vec<CertifiedRoot>,
+    status: Status,
+    complete: bool,
+    bits: u32,
+    reason: Option<String>,
+) -> Certified<Vec<CertifiedRoot>> {
     let perturbation = roots.iter().filter_map(|r| r.perturbation).reduce(f64::max);
     roots.sort_by(|a, b| {
         a.params
             .partial_cmp(&b.params)
             .unwrap_or(std::cmp::Ordering::Equal)
     });
-    // Nothing proven at all: an incomplete search that certified no root.
     let status = if !complete && roots.is_empty() {
         Status::Undecided
     } else {
         status
     };
-    Ok(Certified {
+    Certified {
         value: roots,
         status,
         complete,
@@ -243,7 +256,7 @@ pub fn certify_roots_with<S: System>(
         bits,
         reason: if complete { None } else { reason },
         perturbation,
-    })
+    }
 }
 
 /// A root whose box straddles a true end of the domain, decided where possible

@@ -17,7 +17,7 @@
 //! merged into one (the same thin box, or one box inside the other).
 
 use super::{push_unique, shifted_inside, CertifiedRoot, Options, Unknowns};
-use crate::certificate::{Arithmetic, Certified, Status};
+use crate::certificate::{Certified, Status};
 use crate::certify::{Root, System};
 use crate::curve::Curve;
 use crate::error::GeomError;
@@ -152,7 +152,7 @@ fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
 /// The answer of the pieces together, with the status and completeness rules of
 /// [`super::certify_roots_with`].
 fn assemble(
-    mut roots: Vec<CertifiedRoot>,
+    roots: Vec<CertifiedRoot>,
     mut complete: bool,
     bits: u32,
     reason: Option<String>,
@@ -163,30 +163,7 @@ fn assemble(
     if roots.iter().any(|r| r.status == Status::Undecided) {
         complete = false;
     }
-    let perturbation = roots.iter().filter_map(|r| r.perturbation).reduce(f64::max);
-    roots.sort_by(|a, b| {
-        a.params
-            .partial_cmp(&b.params)
-            .unwrap_or(std::cmp::Ordering::Equal)
-    });
-    let status = if !complete && roots.is_empty() {
-        Status::Undecided
-    } else {
-        status
-    };
-    Certified {
-        value: roots,
-        status,
-        complete,
-        arithmetic: if bits > 53 {
-            Arithmetic::Mpfr
-        } else {
-            Arithmetic::Interval
-        },
-        bits,
-        reason: if complete { None } else { reason },
-        perturbation,
-    }
+    super::answer(roots, status, complete, bits, reason)
 }
 
 /// A curve's parts for [`certify_roots_in_pieces`]: its pinned pieces (from
