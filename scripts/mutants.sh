@@ -16,7 +16,7 @@ set -uo pipefail
 cd "$(dirname "$0")/.."
 export CARGO_PROFILE_RELEASE_INCREMENTAL=true
 
-# id @ file @ text @ replacement @ tests (cargo --test names)
+# id @ file @ text @ replacement @ test files (tests/<name>.rs; each runs inside its suite)
 MUTANTS=(
   "M1@src/num/mpfr_interval/mod.rs@let lo = self.lo.to_f64_round(Round::Down);@let lo = self.lo.to_f64_round(Round::Up);@cli_curved curved_forms intersect_three_surfaces"
   "M2@src/ops/certified/seam.rs@if !unknowns.periodic.iter().any(|&p| p) {@if true {@cli_curved"
@@ -51,9 +51,17 @@ PY
     rm -f "$backup"
     continue
   fi
+  # A test file is a module of one suite binary (tests/suites/): run that suite,
+  # filtered to the file's module.
   args=()
-  for t in $tests; do args+=(--test "$t"); done
-  if cargo test --release --features cgal "${args[@]}" >"/tmp/mutant-$id.log" 2>&1; then
+  filters=()
+  for t in $tests; do
+    suite=$(grep -l "^mod $t;" tests/suites/*.rs | head -1)
+    suite=$(basename "${suite:-tests/$t.rs}" .rs)
+    [[ " ${args[*]} " =~ " $suite " ]] || args+=(--test "$suite")
+    filters+=("$t::")
+  done
+  if cargo test --release --features cgal "${args[@]}" -- "${filters[@]}" >"/tmp/mutant-$id.log" 2>&1; then
     echo "$id SURVIVED ($file; tests: $tests; log /tmp/mutant-$id.log)"
     status=1
   else

@@ -6,7 +6,7 @@
 //! itself — and both must equal `tests/data/cases.expected.jsonl` byte for byte
 //! (timings removed). The expected file pins the answers: a change of any answer shows
 //! here; after an intended change, regenerate it with `GEOCERT_BLESS=1 cargo test
-//! --release --test front_door`.
+//! --release --features cgal --test cli front_door::`.
 
 use std::process::Command;
 

@@ -99,8 +99,8 @@ fn run_part<F: Copy, C>(
     }
 }
 
-/// Fail with `msg` unless `cond`.
-#[macro_export]
+/// Fail with `msg` unless `cond`. (Not `#[macro_export]`: several test files of one
+/// suite include this module, and exported macros of the copies would collide.)
 macro_rules! ensure {
     ($cond:expr, $($msg:tt)+) => {
         if !$cond {
@@ -108,6 +108,8 @@ macro_rules! ensure {
         }
     };
 }
+#[allow(unused_imports)]
+pub(crate) use ensure;
 
 pub type Q3 = [Rational; 3];
 

@@ -1,0 +1,45 @@
+//! Test suite `curves`: Curves: derivatives, enclosures, facts and errors, curve ∩ line/plane/curve, projections onto curves, exact conic and spline routes, near-tangencies, nearest ties, walking a curve.
+//!
+//! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
+//! binary per file cost most of CI's build time. Each file stays a module of its own;
+//! run one with `cargo test --release --features cgal --test curves <file>::`.
+//! `suites.rs` checks that every file of tests/ is in exactly one suite.
+
+#[path = "../curve_derivatives.rs"]
+mod curve_derivatives;
+#[path = "../curve_enclosure.rs"]
+mod curve_enclosure;
+#[path = "../curve_errors.rs"]
+mod curve_errors;
+#[path = "../curve_facts.rs"]
+mod curve_facts;
+#[path = "../curve_json.rs"]
+mod curve_json;
+#[path = "../curved_forms.rs"]
+mod curved_forms;
+#[path = "../curved_forms_3d.rs"]
+mod curved_forms_3d;
+#[path = "../intersect_curve_line2.rs"]
+mod intersect_curve_line2;
+#[path = "../intersect_curve_plane.rs"]
+mod intersect_curve_plane;
+#[path = "../intersect_curves.rs"]
+mod intersect_curves;
+#[path = "../near_tangency_counts.rs"]
+mod near_tangency_counts;
+#[path = "../near_tangency_curves.rs"]
+mod near_tangency_curves;
+#[path = "../nearest_ties.rs"]
+mod nearest_ties;
+#[path = "../nurbs_exact.rs"]
+mod nurbs_exact;
+#[path = "../project_conic_exact.rs"]
+mod project_conic_exact;
+#[path = "../project_curve.rs"]
+mod project_curve;
+#[path = "../rational_conics.rs"]
+mod rational_conics;
+#[path = "../spline_conic_exact.rs"]
+mod spline_conic_exact;
+#[path = "../walk_curve.rs"]
+mod walk_curve;
