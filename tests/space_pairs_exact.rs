@@ -10,12 +10,15 @@
 //! holding the truth.
 
 use geocert::geom::{Line, Segment};
+use geocert::io::objects::parse_object;
+use geocert::io::shape;
 use geocert::num::rng::Rng;
 use geocert::ops::{self, Answer, Options, Point, Shape};
 use geocert::{Certified, GeomError, Status};
 use nalgebra::Vector3;
 use rug::float::Round;
 use rug::{Float, Rational};
+use serde_json::Value;
 
 // ---------------------------------------------------------------- shared checks
 
@@ -253,10 +256,6 @@ fn one_ulp_off_is_skew() {
     assert!(skew > 200, "skew cases: {skew} (still coplanar: {still})");
 }
 
-fn sub3(p: [f64; 3], o: [f64; 3]) -> [f64; 3] {
-    std::array::from_fn(|i| p[i] - o[i])
-}
-
 fn at(o: [f64; 3], d: [f64; 3], s: f64) -> [f64; 3] {
     std::array::from_fn(|i| o[i] + s * d[i])
 }
@@ -426,4 +425,584 @@ fn rational_lines_cross_exactly() {
         check_point(&pts[0], &p, [&[s.clone()], &[u.clone()]], &what);
         assert_eq!(pts[0].exact.as_ref().unwrap().xyz, p.to_vec(), "{what}");
     }
+}
+
+// ---------------------------------------------------------------- helpers for conics
+
+fn conic(v: Value) -> Shape {
+    let spec = parse_object(v, "conic").expect("valid conic");
+    shape(&spec, "conic").expect("valid shape")
+}
+
+// ---------------------------------------------------------------- lines × conics
+
+const BITS: u32 = 1024;
+
+/// `2^k`, exactly.
+fn pow2(k: i32) -> Rational {
+    if k >= 0 {
+        Rational::from(1) << k.unsigned_abs()
+    } else {
+        Rational::from(1) >> k.unsigned_abs()
+    }
+}
+
+fn fl(x: &Rational) -> Float {
+    Float::with_val(BITS, x)
+}
+
+/// An exact frame with rational unit vectors: `axis`, `ref` ⊥ `axis` and `Y = Z × X`, each
+/// of length `len` (Pythagorean quadruples), so local coordinates are rational.
+struct Frame {
+    n: [i64; 3],
+    u: [i64; 3],
+    v: [i64; 3],
+    len: i64,
+}
+
+const FRAMES: [Frame; 3] = [
+    Frame {
+        n: [0, 0, 1],
+        u: [1, 0, 0],
+        v: [0, 1, 0],
+        len: 1,
+    },
+    Frame {
+        n: [1, 2, 2],
+        u: [2, 1, -2],
+        v: [-2, 2, -1],
+        len: 3,
+    },
+    Frame {
+        n: [2, 3, 6],
+        u: [6, 2, -3],
+        v: [-3, 6, -2],
+        len: 7,
+    },
+];
+
+#[derive(Clone, Copy, Debug)]
+enum Kind {
+    Circle,
+    Ellipse,
+    Hyperbola,
+    Parabola,
+}
+
+/// A conic of the case format with everything its truth needs.
+struct Conic {
+    kind: Kind,
+    frame: &'static Frame,
+    c: [Rational; 3],
+    /// `r` (circle), `a, b` (ellipse, hyperbola), `p` (parabola).
+    a: Rational,
+    b: Rational,
+    /// The parameter range (hyperbola, parabola).
+    range: [f64; 2],
+    shape: Shape,
+}
+
+impl Conic {
+    fn new(kind: Kind, frame: &'static Frame, c: [f64; 3], a: f64, b: f64, sc: f64) -> Conic {
+        let range = match kind {
+            Kind::Hyperbola => [-3.0, 3.0],
+            Kind::Parabola => [-40.0 * sc, 40.0 * sc],
+            _ => [0.0, std::f64::consts::TAU],
+        };
+        let json = match kind {
+            Kind::Circle => serde_json::json!({"type": "circle", "center": c, "radius": a,
+                "axis": frame.n, "ref": frame.u}),
+            Kind::Ellipse => serde_json::json!({"type": "ellipse", "center": c, "a": a, "b": b,
+                "axis": frame.n, "ref": frame.u}),
+            Kind::Hyperbola => serde_json::json!({"type": "hyperbola", "center": c, "a": a,
+                "b": b, "axis": frame.n, "ref": frame.u, "range": range}),
+            Kind::Parabola => serde_json::json!({"type": "parabola", "vertex": c, "p": a,
+                "axis": frame.n, "ref": frame.u, "range": range}),
+        };
+        Conic {
+            kind,
+            frame,
+            c: qv(c),
+            a: q(a),
+            b: q(b),
+            range,
+            shape: conic(json),
+        }
+    }
+
+    /// Local `(x, y, z)` of a point.
+    fn local(&self, p: &[Rational; 3]) -> [Rational; 3] {
+        let w: [Rational; 3] = std::array::from_fn(|i| Rational::from(&p[i] - &self.c[i]));
+        let f = self.frame;
+        let dot = |e: [i64; 3]| -> Rational {
+            (0..3)
+                .map(|i| Rational::from(&w[i] * e[i]))
+                .sum::<Rational>()
+                / f.len
+        };
+        [dot(f.u), dot(f.v), dot(f.n)]
+    }
+
+    /// The point of local `(x, y)` (in the plane).
+    fn point(&self, x: &Rational, y: &Rational) -> [Rational; 3] {
+        let f = self.frame;
+        std::array::from_fn(|i| {
+            Rational::from(x * f.u[i]) / f.len + Rational::from(y * f.v[i]) / f.len + &self.c[i]
+        })
+    }
+
+    /// A direction of local `(x, y, z)`.
+    fn dir(&self, x: &Rational, y: &Rational, z: &Rational) -> [Rational; 3] {
+        let f = self.frame;
+        std::array::from_fn(|i| {
+            (Rational::from(x * f.u[i]) + Rational::from(y * f.v[i]) + Rational::from(z * f.n[i]))
+                / f.len
+        })
+    }
+
+    /// The implicit equation on local `(x, y)` as `[c0, c1, c2]` of `x = x0 + t x1`,
+    /// `y = y0 + t y1` (`[x0, x1]`, `[y0, y1]`).
+    fn restricted(&self, x: [Rational; 2], y: [Rational; 2]) -> [Rational; 3] {
+        let sq = |v: &[Rational; 2]| -> [Rational; 3] {
+            [
+                v[0].clone().square(),
+                Rational::from(&v[0] * &v[1]) * 2u32,
+                v[1].clone().square(),
+            ]
+        };
+        let comb =
+            |p: [Rational; 3], s: Rational, r: [Rational; 3], t: Rational| -> [Rational; 3] {
+                std::array::from_fn(|i| Rational::from(&p[i] * &s) + Rational::from(&r[i] * &t))
+            };
+        let one = Rational::from(1);
+        match self.kind {
+            Kind::Circle => {
+                let mut e = comb(sq(&x), one.clone(), sq(&y), one);
+                e[0] -= self.a.clone().square();
+                e
+            }
+            Kind::Ellipse | Kind::Hyperbola => {
+                let sy = if matches!(self.kind, Kind::Ellipse) {
+                    1
+                } else {
+                    -1
+                };
+                let mut e = comb(
+                    sq(&x),
+                    Rational::from(1) / self.a.clone().square(),
+                    sq(&y),
+                    Rational::from(sy) / self.b.clone().square(),
+                );
+                e[0] -= 1;
+                e
+            }
+            Kind::Parabola => {
+                let p2 = Rational::from(&self.a * 2u32);
+                let mut e = sq(&y);
+                e[0] -= Rational::from(&p2 * &x[0]);
+                e[1] -= Rational::from(&p2 * &x[1]);
+                e
+            }
+        }
+    }
+
+    /// The implicit equation at a point of the plane.
+    fn value(&self, x: &Rational, y: &Rational) -> Rational {
+        self.restricted([x.clone(), Rational::new()], [y.clone(), Rational::new()])[0].clone()
+    }
+
+    /// The curve parameter at local `(x, y)` (MPFR), `None` off the curve's branch or
+    /// range.
+    fn param(&self, x: &Float, y: &Float) -> Option<Float> {
+        let (a, b) = (fl(&self.a), fl(&self.b));
+        let t = match self.kind {
+            Kind::Circle => {
+                let t = Float::with_val(BITS, y.atan2_ref(x));
+                if t < 0 {
+                    t + Float::with_val(BITS, rug::float::Constant::Pi) * 2u32
+                } else {
+                    t
+                }
+            }
+            Kind::Ellipse => {
+                let t = Float::with_val(BITS, (y.clone() / &b).atan2(&(x.clone() / &a)));
+                if t < 0 {
+                    t + Float::with_val(BITS, rug::float::Constant::Pi) * 2u32
+                } else {
+                    t
+                }
+            }
+            Kind::Hyperbola => {
+                if *x <= 0 {
+                    return None;
+                }
+                (y.clone() / &b).asinh()
+            }
+            Kind::Parabola => y.clone(),
+        };
+        let inside = matches!(self.kind, Kind::Circle | Kind::Ellipse)
+            || (t >= self.range[0] && t <= self.range[1]);
+        inside.then_some(t)
+    }
+
+    /// A rational point on the curve from the rational `m` (module doc of the family),
+    /// with a tangent and an in-plane normal (local), and its parameter.
+    fn sample(&self, m: &Rational) -> ([Rational; 2], [Rational; 2], [Rational; 2]) {
+        let one = Rational::from(1);
+        let (a, b) = (&self.a, &self.b);
+        let (x, y, tx, ty) = match self.kind {
+            Kind::Circle | Kind::Ellipse => {
+                let bb = if matches!(self.kind, Kind::Circle) {
+                    a
+                } else {
+                    b
+                };
+                let den = Rational::from(&one + m.clone().square());
+                let c = (Rational::from(&one - m.clone().square())) / &den;
+                let s = Rational::from(m * 2u32) / &den;
+                (
+                    Rational::from(a * &c),
+                    Rational::from(bb * &s),
+                    -Rational::from(a * &s),
+                    Rational::from(bb * &c),
+                )
+            }
+            Kind::Hyperbola => {
+                // w = e^t > 0.
+                let w = m.clone().abs() + Rational::from((1, 3));
+                let (ch, sh) = (
+                    (Rational::from(&w + w.clone().recip())) / 2u32,
+                    (Rational::from(&w - w.clone().recip())) / 2u32,
+                );
+                (
+                    Rational::from(a * &ch),
+                    Rational::from(b * &sh),
+                    Rational::from(a * &sh),
+                    Rational::from(b * &ch),
+                )
+            }
+            Kind::Parabola => (
+                m.clone().square() / Rational::from(a * 2u32),
+                m.clone(),
+                m.clone() / a,
+                one,
+            ),
+        };
+        ([x, y], [tx.clone(), ty.clone()], [ty, -tx])
+    }
+}
+
+fn vector(v: &[Rational; 3]) -> Vector3<Rational> {
+    Vector3::new(v[0].clone(), v[1].clone(), v[2].clone())
+}
+
+/// The line `o + t·d` exactly: as doubles when every number is one, else rationals.
+fn exact_line(o: &[Rational; 3], d: &[Rational; 3]) -> Shape {
+    let doubles = o.iter().chain(d.iter()).all(|x| q(nearest(x)) == *x);
+    if doubles {
+        line(o.clone().map(|x| x.to_f64()), d.clone().map(|x| x.to_f64()))
+    } else {
+        Line::new(vector(o), vector(d)).expect("line").into()
+    }
+}
+
+fn exact_segment(a: &[Rational; 3], b: &[Rational; 3]) -> Shape {
+    Segment::new(vector(a), vector(b)).expect("segment").into()
+}
+
+/// The float `x` lies in `b`.
+fn holds(b: [f64; 2], x: &Float) -> bool {
+    *x >= b[0] && *x <= b[1]
+}
+
+/// An angle box holds `t` (modulo 2π: a box across the seam).
+fn holds_angle(b: [f64; 2], t: &Float) -> bool {
+    let tau = Float::with_val(BITS, rug::float::Constant::Pi) * 2u32;
+    holds(b, t) || holds(b, &(t.clone() - &tau)) || holds(b, &(t.clone() + &tau))
+}
+
+/// The expected common points of an in-plane line `o + t·d` with the conic: the real
+/// roots of the restricted quadratic (MPFR), on the branch and in the range, with their
+/// multiplicity.
+/// A truth root `t` of the line: in MPFR, exactly when rational, with its multiplicity.
+type Root = (Float, u32, Option<Rational>);
+
+fn root(t: Rational, mult: u32) -> Root {
+    (fl(&t), mult, Some(t))
+}
+
+fn in_plane_truth(cn: &Conic, o: &[Rational; 3], d: &[Rational; 3]) -> Vec<Root> {
+    let lo = cn.local(o);
+    // The local coordinates of the direction: those of the point c + d.
+    let dz = cn.local(&std::array::from_fn(|i| Rational::from(&d[i] + &cn.c[i])));
+    let e = cn.restricted(
+        [lo[0].clone(), dz[0].clone()],
+        [lo[1].clone(), dz[1].clone()],
+    );
+    let mut roots = Vec::new();
+    if e[2] == 0 {
+        if e[1] != 0 {
+            roots.push(root(-e[0].clone() / &e[1], 1));
+        }
+    } else {
+        let disc = e[1].clone().square() - Rational::from(&e[0] * &e[2]) * 4u32;
+        let two_a = Rational::from(&e[2] * 2u32);
+        let (n, dd) = disc.clone().into_numer_denom();
+        if disc == 0 {
+            roots.push(root(-e[1].clone() / two_a, 2));
+        } else if disc > 0 && n.is_perfect_square() && dd.is_perfect_square() {
+            let s = Rational::from((n.sqrt(), dd.sqrt()));
+            let r1 = (-e[1].clone() - &s) / &two_a;
+            let r2 = (-e[1].clone() + &s) / &two_a;
+            roots.push(root(r1, 1));
+            roots.push(root(r2, 1));
+        } else if disc > 0 {
+            let (two_a, s) = (fl(&two_a), fl(&disc).sqrt());
+            let r1 = (fl(&-e[1].clone()) - s.clone()) / &two_a;
+            let r2 = (fl(&-e[1].clone()) + s) / &two_a;
+            roots.push((r1, 1, None));
+            roots.push((r2, 1, None));
+        }
+    }
+    roots.sort_by(|a, b| a.0.partial_cmp(&b.0).unwrap());
+    let xy = |t: &Float| {
+        (
+            fl(&lo[0]) + t.clone() * fl(&dz[0]),
+            fl(&lo[1]) + t.clone() * fl(&dz[1]),
+        )
+    };
+    roots
+        .into_iter()
+        .filter(|(t, _, _)| {
+            let (x, y) = xy(t);
+            cn.param(&x, &y).is_some()
+        })
+        .collect()
+}
+
+/// The answer of the line (first) against the conic matches the truth roots one to one:
+/// the line parameter and every coordinate in their boxes and correctly rounded, the
+/// curve parameter in its box, the multiplicity.
+fn check_roots(
+    cn: &Conic,
+    r: &Certified<Answer>,
+    o: &[Rational; 3],
+    d: &[Rational; 3],
+    truth: &[Root],
+    what: &str,
+) {
+    assert_exact(r, what);
+    let mut pts: Vec<&Point> = points(r).iter().collect();
+    assert_eq!(pts.len(), truth.len(), "{what}: {r:?} vs {truth:?}");
+    pts.sort_by(|a, b| a.params[0][0].partial_cmp(&b.params[0][0]).unwrap());
+    for (p, (t, mult, exact)) in pts.iter().zip(truth) {
+        let boxes = p.param_box.as_ref().unwrap();
+        let th = if let Some(t) = exact {
+            // A rational root: everything exactly.
+            check_rational(p.params[0][0], boxes[0][0], t, &format!("{what} line t"));
+            let xyz: [Rational; 3] = std::array::from_fn(|i| Rational::from(&d[i] * t) + &o[i]);
+            for i in 0..3 {
+                check_rational(p.xyz[i], p.xyz_box[i], &xyz[i], &format!("{what} xyz[{i}]"));
+            }
+            let l = cn.local(&xyz);
+            assert_eq!(l[2], 0, "{what}: the truth is in the plane");
+            cn.param(&fl(&l[0]), &fl(&l[1]))
+        } else {
+            assert!(
+                holds(boxes[0][0], t),
+                "{what}: line parameter {t} outside {boxes:?}"
+            );
+            assert_eq!(
+                p.params[0][0],
+                t.to_f64(),
+                "{what}: line parameter rounding"
+            );
+            let xyz: Vec<Float> = (0..3).map(|i| fl(&o[i]) + t.clone() * fl(&d[i])).collect();
+            for i in 0..3 {
+                assert!(
+                    holds(p.xyz_box[i], &xyz[i]),
+                    "{what}: xyz[{i}] {} outside",
+                    xyz[i]
+                );
+                assert_eq!(p.xyz[i], xyz[i].to_f64(), "{what}: xyz[{i}] rounding");
+            }
+            let w: Vec<Float> = (0..3).map(|i| xyz[i].clone() - fl(&cn.c[i])).collect();
+            let loc = |e: [i64; 3]| -> Float {
+                (0..3)
+                    .map(|i| w[i].clone() * e[i])
+                    .fold(Float::with_val(BITS, 0), |a, b| a + b)
+                    / cn.frame.len
+            };
+            cn.param(&loc(cn.frame.u), &loc(cn.frame.v))
+        };
+        let th = th.expect("on the curve");
+        let ok = match cn.kind {
+            Kind::Circle | Kind::Ellipse => holds_angle(boxes[1][0], &th),
+            _ => holds(boxes[1][0], &th),
+        };
+        assert!(ok, "{what}: curve parameter {th} outside {:?}", boxes[1]);
+        assert_eq!(p.multiplicity, *mult, "{what}: multiplicity");
+        assert_eq!(p.tangent, *mult == 2, "{what}: tangent");
+    }
+}
+
+fn conics_for(rng: &mut Rng, k: i32) -> Vec<Conic> {
+    let sc = 2f64.powi(k);
+    let mut out = Vec::new();
+    for frame in &FRAMES {
+        let c = [0; 3].map(|_| rng.int(-20, 20) as f64 * sc);
+        let (a, b) = (rng.int(2, 9) as f64 * sc, rng.int(2, 9) as f64 * sc);
+        for kind in [Kind::Circle, Kind::Ellipse, Kind::Hyperbola, Kind::Parabola] {
+            let b = if matches!(kind, Kind::Circle) { a } else { b };
+            out.push(Conic::new(kind, frame, c, a, b, sc));
+        }
+    }
+    out
+}
+
+fn small_q(rng: &mut Rng) -> Rational {
+    Rational::from((rng.int(-12, 12), rng.int(1, 8)))
+}
+
+/// Lines crossing the conic's plane at a rational point of the conic (unbounded, a
+/// segment around it, a segment beyond it, a ray), one ulp off it (empty), parallel to
+/// the plane (empty), in both orders; frames with axes `(0,0,1)`, `(1,2,2)`, `(2,3,6)`,
+/// magnitudes `2^−300 … 2^300`.
+#[test]
+fn lines_crossing_the_plane_of_a_conic() {
+    let mut rng = Rng::new(1604);
+    let mut hits = 0;
+    for round in 0..12 {
+        let k = [0, 300, -300, 20][round % 4];
+        let sc = pow2(k);
+        for cn in conics_for(&mut rng, k) {
+            let what = format!("round {round} {:?} frame {:?}", cn.kind, cn.frame.n);
+            let m = small_q(&mut rng);
+            let ([x, y], _, nrm) = cn.sample(&m);
+            let on_range = cn.param(&fl(&x), &fl(&y)).is_some();
+            let p = cn.point(&x, &y);
+            let gz = Rational::from(rng.int(1, 5) * if rng.coin() { 1 } else { -1 });
+            let d = cn.dir(&small_q(&mut rng), &small_q(&mut rng), &gz);
+            let d: [Rational; 3] = d.map(|v| v * &sc);
+            let tau = small_q(&mut rng);
+            let o: [Rational; 3] = std::array::from_fn(|i| &p[i] - Rational::from(&tau * &d[i]));
+            let truth = if on_range {
+                vec![root(tau.clone(), 1)]
+            } else {
+                vec![]
+            };
+            hits += truth.len();
+            let r = run(&exact_line(&o, &d), &cn.shape, false).unwrap();
+            check_roots(&cn, &r, &o, &d, &truth, &what);
+            // The conic first: the same point, parameters swapped.
+            let r2 = run(&cn.shape, &exact_line(&o, &d), false).unwrap();
+            assert_exact(&r2, &what);
+            assert_eq!(points(&r2).len(), truth.len(), "{what}");
+            for (a, b) in points(&r2).iter().zip(points(&r)) {
+                assert_eq!(a.params, vec![b.params[1].clone(), b.params[0].clone()]);
+            }
+            // A segment around the point (t = 1/2), and one beyond it.
+            let (a, b): ([Rational; 3], [Rational; 3]) = (
+                std::array::from_fn(|i| Rational::from(&p[i] - &d[i])),
+                std::array::from_fn(|i| Rational::from(&p[i] + &d[i])),
+            );
+            let half = vec![root(Rational::from((1, 2)), 1)];
+            let r = run(&exact_segment(&a, &b), &cn.shape, false).unwrap();
+            let a_d: [Rational; 3] = std::array::from_fn(|i| Rational::from(&d[i] * 2u32));
+            check_roots(&cn, &r, &a, &a_d, if on_range { &half } else { &[] }, &what);
+            let c2: [Rational; 3] = std::array::from_fn(|i| Rational::from(&b[i] + &d[i]));
+            let r = run(&exact_segment(&b, &c2), &cn.shape, false).unwrap();
+            check_roots(&cn, &r, &b, &d, &[], &what);
+            // Rays: from the point along d (t = 0) and from beyond it (empty).
+            let from_p: Shape = Line::ray(vector(&p), vector(&d)).expect("ray").into();
+            let r = run(&from_p, &cn.shape, false).unwrap();
+            let zero_root = vec![root(Rational::new(), 1)];
+            check_roots(&cn, &r, &p, &d, if on_range { &zero_root } else { &[] }, &what);
+            let beyond: Shape = Line::ray(vector(&b), vector(&d)).expect("ray").into();
+            let r = run(&beyond, &cn.shape, true).unwrap();
+            check_roots(&cn, &r, &b, &d, &[], &what);
+            // One ulp off the curve along its in-plane normal: the plane point is off.
+            let ulp = pow2(-52) * &sc;
+            let (x1, y1) = (
+                Rational::from(&x + Rational::from(&nrm[0] * &ulp)),
+                Rational::from(&y + Rational::from(&nrm[1] * &ulp)),
+            );
+            assert_ne!(
+                cn.value(&x1, &y1),
+                0,
+                "{what}: the shifted point is off the curve"
+            );
+            let p1 = cn.point(&x1, &y1);
+            let r = run(&exact_line(&p1, &d), &cn.shape, rng.coin()).unwrap();
+            check_roots(&cn, &r, &p1, &d, &[], &what);
+            // Parallel to the plane, one unit above the point.
+            let dp = cn.dir(&small_q(&mut rng), &Rational::from(1), &Rational::new());
+            let up: [Rational; 3] = std::array::from_fn(|i| {
+                Rational::from(&p[i] + Rational::from(cn.frame.n[i]) * &sc)
+            });
+            let r = run(&exact_line(&up, &dp), &cn.shape, false).unwrap();
+            check_roots(&cn, &r, &up, &dp, &[], &what);
+            assert_eq!(r.reason.as_deref(), Some("parallel"), "{what}");
+        }
+    }
+    assert!(hits > 100, "hits: {hits}");
+}
+
+/// Lines in the conic's plane: tangent at a rational point (a proven double root),
+/// shifted off the tangent by ±1 ulp and ±1e-9 (two crossings or none, by the exact
+/// discriminant), and random chords; the truth is the restricted quadratic solved in
+/// MPFR at 1024 bits.
+#[test]
+fn lines_in_the_plane_of_a_conic() {
+    let mut rng = Rng::new(1605);
+    let (mut tangents, mut two) = (0, 0);
+    for round in 0..10 {
+        let k = [0, 300, -300, 20, -20][round % 5];
+        let sc = pow2(k);
+        for cn in conics_for(&mut rng, k) {
+            let what = format!("round {round} {:?} frame {:?}", cn.kind, cn.frame.n);
+            let m = small_q(&mut rng);
+            let ([x, y], tan, nrm) = cn.sample(&m);
+            let zero = Rational::new();
+            let d = cn.dir(&tan[0], &tan[1], &zero);
+            let p = cn.point(&x, &y);
+            let check = |o: &[Rational; 3], what: &str| -> usize {
+                let truth = in_plane_truth(&cn, o, &d);
+                let r = run(&exact_line(o, &d), &cn.shape, false).unwrap();
+                check_roots(&cn, &r, o, &d, &truth, what);
+                truth.len()
+            };
+            let n = check(&p, &format!("{what} tangent"));
+            if cn.param(&fl(&x), &fl(&y)).is_some() {
+                assert_eq!(n, 1, "{what}: the tangent touches");
+                tangents += 1;
+            }
+            for off in [pow2(-52), -pow2(-52), q(1e-9), -q(1e-9)] {
+                let e = Rational::from(&off * &sc);
+                let o = cn.point(
+                    &Rational::from(&x + Rational::from(&nrm[0] * &e)),
+                    &Rational::from(&y + Rational::from(&nrm[1] * &e)),
+                );
+                two += usize::from(check(&o, &format!("{what} off {off}")) == 2);
+            }
+            // Random chords through a random point of the plane.
+            for _ in 0..3 {
+                let o = cn.point(
+                    &Rational::from(&small_q(&mut rng) * &sc),
+                    &Rational::from(&small_q(&mut rng) * &sc),
+                );
+                let dd = cn.dir(&small_q(&mut rng), &small_q(&mut rng), &zero);
+                if dd.iter().all(|v| *v == 0) {
+                    continue;
+                }
+                let truth = in_plane_truth(&cn, &o, &dd);
+                let r = run(&exact_line(&o, &dd), &cn.shape, false).unwrap();
+                check_roots(&cn, &r, &o, &dd, &truth, &format!("{what} chord"));
+            }
+        }
+    }
+    assert!(
+        tangents > 60 && two > 60,
+        "tangents {tangents}, two crossings {two}"
+    );
 }
