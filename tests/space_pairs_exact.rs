@@ -917,7 +917,14 @@ fn lines_crossing_the_plane_of_a_conic() {
             let from_p: Shape = Line::ray(vector(&p), vector(&d)).expect("ray").into();
             let r = run(&from_p, &cn.shape, false).unwrap();
             let zero_root = vec![root(Rational::new(), 1)];
-            check_roots(&cn, &r, &p, &d, if on_range { &zero_root } else { &[] }, &what);
+            check_roots(
+                &cn,
+                &r,
+                &p,
+                &d,
+                if on_range { &zero_root } else { &[] },
+                &what,
+            );
             let beyond: Shape = Line::ray(vector(&b), vector(&d)).expect("ray").into();
             let r = run(&beyond, &cn.shape, true).unwrap();
             check_roots(&cn, &r, &b, &d, &[], &what);

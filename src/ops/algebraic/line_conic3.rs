@@ -30,12 +30,11 @@ use std::cmp::Ordering;
 use super::conic_plane::{
     curve_params, exact_frame, hits, on_branch, point, restricted, Hit, Local,
 };
-use super::pairs::compare;
 use crate::certificate::{Arithmetic, Certified};
 use crate::certify::univariate::{real_roots, Polynomial, RealRoot};
 use crate::curve::analytic::{Analytic, Shape as CurveShape};
 use crate::ops::answer::Answer;
-use crate::ops::rational::exact::{dot, sign_at_root};
+use crate::ops::rational::exact::{compare_root as compare, dot, sign_at_root};
 use crate::ops::shape::{Linear, LinearObject};
 
 type V3 = [Rational; 3];

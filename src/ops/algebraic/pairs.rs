@@ -28,6 +28,7 @@ use crate::num::round::round_rational;
 use crate::num::Interval;
 use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
 use crate::ops::closed_surface::is_closed_shell;
+use crate::ops::rational::exact::compare_root as compare;
 use crate::ops::rational::rounding::PRECISION_CAP;
 use crate::ops::shape::{Linear, LinearObject, Shape};
 use crate::surface::frame::Frame;
@@ -146,24 +147,6 @@ pub(super) fn surface_params(shape: &Closed, p: &[Interval; 3]) -> Vec<(f64, [f6
         (v.midpoint(), [v.lo(), v.hi()])
     };
     vec![param(u), v]
-}
-
-/// Compare the root `t` with the rational `a`, exactly (refining an irrational root's
-/// isolating interval until `a` lies outside it).
-pub(super) fn compare(t: &mut RealRoot, a: &Rational) -> Ordering {
-    loop {
-        let (lo, hi) = t.interval();
-        if lo == hi {
-            return lo.cmp(a);
-        }
-        if lo >= *a {
-            return Ordering::Greater;
-        }
-        if hi <= *a {
-            return Ordering::Less;
-        }
-        t.refine();
-    }
 }
 
 fn in_range(t: &RealRoot, range: &Option<[Rational; 2]>) -> bool {
