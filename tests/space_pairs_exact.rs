@@ -52,8 +52,8 @@ fn check_rational(v: f64, b: [f64; 2], x: &Rational, what: &str) {
 
 /// A point against its rational truth: coordinates and the two objects' parameters.
 fn check_point(p: &Point, xyz: &[Rational], params: [&[Rational]; 2], what: &str) {
-    for i in 0..xyz.len() {
-        check_rational(p.xyz[i], p.xyz_box[i], &xyz[i], &format!("{what} xyz[{i}]"));
+    for (i, x) in xyz.iter().enumerate() {
+        check_rational(p.xyz[i], p.xyz_box[i], x, &format!("{what} xyz[{i}]"));
     }
     let boxes = p.param_box.as_ref().expect("param boxes");
     for (k, truth) in params.iter().enumerate() {
@@ -173,7 +173,12 @@ fn crossing_lines_segments_rays_are_exact() {
         assert_exact(&r, &what);
         let p = points(&r);
         assert_eq!(p.len(), 1, "{what}: {r:?}");
-        check_point(&p[0], &x.p, [&[x.s.clone()], &[x.u.clone()]], &what);
+        check_point(
+            &p[0],
+            &x.p,
+            [std::slice::from_ref(&x.s), std::slice::from_ref(&x.u)],
+            &what,
+        );
         if exact {
             let e = p[0].exact.as_ref().expect("exact values asked for");
             assert_eq!(e.xyz, x.p.to_vec(), "{what}: exact point");
@@ -186,7 +191,12 @@ fn crossing_lines_segments_rays_are_exact() {
             counts[0] += 1;
             let p = points(&r);
             assert_eq!(p.len(), 1, "{what}: {r:?}");
-            check_point(&p[0], &x.p, [&[x.u.clone()], &[x.s.clone()]], &what);
+            check_point(
+                &p[0],
+                &x.p,
+                [std::slice::from_ref(&x.u), std::slice::from_ref(&x.s)],
+                &what,
+            );
         } else {
             counts[1] += 1;
             assert!(points(&r).is_empty(), "{what}: {r:?}");
@@ -422,7 +432,12 @@ fn rational_lines_cross_exactly() {
         assert_exact(&r, &what);
         let pts = points(&r);
         assert_eq!(pts.len(), 1, "{what}: {r:?}");
-        check_point(&pts[0], &p, [&[s.clone()], &[u.clone()]], &what);
+        check_point(
+            &pts[0],
+            &p,
+            [std::slice::from_ref(&s), std::slice::from_ref(&u)],
+            &what,
+        );
         assert_eq!(pts[0].exact.as_ref().unwrap().xyz, p.to_vec(), "{what}");
     }
 }
@@ -657,8 +672,8 @@ impl Conic {
                 } else {
                     b
                 };
-                let den = Rational::from(&one + m.clone().square());
-                let c = (Rational::from(&one - m.clone().square())) / &den;
+                let den = &one + m.clone().square();
+                let c = (&one - m.clone().square()) / &den;
                 let s = Rational::from(m * 2u32) / &den;
                 (
                     Rational::from(a * &c),
@@ -671,8 +686,8 @@ impl Conic {
                 // w = e^t > 0.
                 let w = m.clone().abs() + Rational::from((1, 3));
                 let (ch, sh) = (
-                    (Rational::from(&w + w.clone().recip())) / 2u32,
-                    (Rational::from(&w - w.clone().recip())) / 2u32,
+                    (&w + w.clone().recip()) / 2u32,
+                    (&w - w.clone().recip()) / 2u32,
                 );
                 (
                     Rational::from(a * &ch),
@@ -801,8 +816,8 @@ fn check_roots(
             // A rational root: everything exactly.
             check_rational(p.params[0][0], boxes[0][0], t, &format!("{what} line t"));
             let xyz: [Rational; 3] = std::array::from_fn(|i| Rational::from(&d[i] * t) + &o[i]);
-            for i in 0..3 {
-                check_rational(p.xyz[i], p.xyz_box[i], &xyz[i], &format!("{what} xyz[{i}]"));
+            for (i, x) in xyz.iter().enumerate() {
+                check_rational(p.xyz[i], p.xyz_box[i], x, &format!("{what} xyz[{i}]"));
             }
             let l = cn.local(&xyz);
             assert_eq!(l[2], 0, "{what}: the truth is in the plane");
@@ -818,13 +833,9 @@ fn check_roots(
                 "{what}: line parameter rounding"
             );
             let xyz: Vec<Float> = (0..3).map(|i| fl(&o[i]) + t.clone() * fl(&d[i])).collect();
-            for i in 0..3 {
-                assert!(
-                    holds(p.xyz_box[i], &xyz[i]),
-                    "{what}: xyz[{i}] {} outside",
-                    xyz[i]
-                );
-                assert_eq!(p.xyz[i], xyz[i].to_f64(), "{what}: xyz[{i}] rounding");
+            for (i, x) in xyz.iter().enumerate() {
+                assert!(holds(p.xyz_box[i], x), "{what}: xyz[{i}] {} outside", x);
+                assert_eq!(p.xyz[i], x.to_f64(), "{what}: xyz[{i}] rounding");
             }
             let w: Vec<Float> = (0..3).map(|i| xyz[i].clone() - fl(&cn.c[i])).collect();
             let loc = |e: [i64; 3]| -> Float {
@@ -931,8 +942,8 @@ fn lines_crossing_the_plane_of_a_conic() {
             // One ulp off the curve along its in-plane normal: the plane point is off.
             let ulp = pow2(-52) * &sc;
             let (x1, y1) = (
-                Rational::from(&x + Rational::from(&nrm[0] * &ulp)),
-                Rational::from(&y + Rational::from(&nrm[1] * &ulp)),
+                (&x + Rational::from(&nrm[0] * &ulp)),
+                (&y + Rational::from(&nrm[1] * &ulp)),
             );
             assert_ne!(
                 cn.value(&x1, &y1),
@@ -944,9 +955,8 @@ fn lines_crossing_the_plane_of_a_conic() {
             check_roots(&cn, &r, &p1, &d, &[], &what);
             // Parallel to the plane, one unit above the point.
             let dp = cn.dir(&small_q(&mut rng), &Rational::from(1), &Rational::new());
-            let up: [Rational; 3] = std::array::from_fn(|i| {
-                Rational::from(&p[i] + Rational::from(cn.frame.n[i]) * &sc)
-            });
+            let up: [Rational; 3] =
+                std::array::from_fn(|i| &p[i] + Rational::from(cn.frame.n[i]) * &sc);
             let r = run(&exact_line(&up, &dp), &cn.shape, false).unwrap();
             check_roots(&cn, &r, &up, &dp, &[], &what);
             assert_eq!(r.reason.as_deref(), Some("parallel"), "{what}");
@@ -987,8 +997,8 @@ fn lines_in_the_plane_of_a_conic() {
             for off in [pow2(-52), -pow2(-52), q(1e-9), -q(1e-9)] {
                 let e = Rational::from(&off * &sc);
                 let o = cn.point(
-                    &Rational::from(&x + Rational::from(&nrm[0] * &e)),
-                    &Rational::from(&y + Rational::from(&nrm[1] * &e)),
+                    &(&x + Rational::from(&nrm[0] * &e)),
+                    &(&y + Rational::from(&nrm[1] * &e)),
                 );
                 two += usize::from(check(&o, &format!("{what} off {off}")) == 2);
             }
