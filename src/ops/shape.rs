@@ -16,7 +16,9 @@ use super::polyhedron::Polyhedron;
 use crate::curve::lines::{Line as CurveLine, Segment as CurveSegment};
 use crate::curve::{AnyCurve2, AnyCurve3, Conic2};
 use crate::error::GeomError;
-use crate::geom::{Coord, Line, Line2, Linear as LinearRef, Linear2, Plane, Segment, Segment2};
+use crate::geom::{
+    Coord, Line, Line2, Linear as LinearRef, Linear2, ParamRange, Plane, Segment, Segment2,
+};
 use crate::surface::AnySurface;
 
 /// A linear object over one coordinate type (`f64` or `rug::Rational`).
@@ -103,10 +105,18 @@ impl<T: Coord> LinearObject<T> {
 fn convert<T: Coord, U: Coord>(o: &LinearObject<T>, f: impl Fn(&T) -> U) -> LinearObject<U> {
     let v3 = |v: &Vector3<T>| Vector3::new(f(&v[0]), f(&v[1]), f(&v[2]));
     let v2 = |v: &Vector2<T>| Vector2::new(f(&v[0]), f(&v[1]));
-    let range = |r: Option<&[T; 2]>| r.map(|[a, b]| [f(a), f(b)]);
+    // The range as given: a ray keeps its one-sided range.
+    let param_range = |r: Option<&ParamRange<T>>| {
+        r.map(|r| match r {
+            ParamRange::Closed([a, b]) => ParamRange::Closed([f(a), f(b)]),
+            ParamRange::AtLeast(a) => ParamRange::AtLeast(f(a)),
+            ParamRange::AtMost(b) => ParamRange::AtMost(f(b)),
+        })
+    };
     let built = match o {
         LinearObject::Line(l) => {
-            Line::with_range(v3(l.origin()), v3(l.dir()), range(l.range())).map(LinearObject::Line)
+            Line::with_param_range(v3(l.origin()), v3(l.dir()), param_range(l.param_range()))
+                .map(LinearObject::Line)
         }
         LinearObject::Segment(s) => Segment::new(v3(s.a()), v3(s.b())).map(LinearObject::Segment),
         LinearObject::Plane(Plane::Parametric { origin, u, v }) => {
@@ -115,8 +125,10 @@ fn convert<T: Coord, U: Coord>(o: &LinearObject<T>, f: impl Fn(&T) -> U) -> Line
         LinearObject::Plane(Plane::Implicit { normal, d }) => {
             Plane::implicit(v3(normal), f(d)).map(LinearObject::Plane)
         }
-        LinearObject::Line2(l) => Line2::with_range(v2(l.origin()), v2(l.dir()), range(l.range()))
-            .map(LinearObject::Line2),
+        LinearObject::Line2(l) => {
+            Line2::with_param_range(v2(l.origin()), v2(l.dir()), param_range(l.param_range()))
+                .map(LinearObject::Line2)
+        }
         LinearObject::Segment2(s) => {
             Segment2::new(v2(s.a()), v2(s.b())).map(LinearObject::Segment2)
         }
@@ -219,11 +231,14 @@ impl LinearObject<Rational> {
     /// The field path of the first number that is not a double (`origin[1]`).
     fn first_inexact(&self) -> Option<String> {
         let fields: Vec<(&str, Vec<&Rational>)> = match self {
-            LinearObject::Line(l) => vec![
-                ("origin", l.origin().iter().collect()),
-                ("dir", l.dir().iter().collect()),
-                ("range", l.range().map_or(vec![], |r| r.iter().collect())),
-            ],
+            LinearObject::Line(l) => {
+                let (lo, hi) = l.bounds();
+                vec![
+                    ("origin", l.origin().iter().collect()),
+                    ("dir", l.dir().iter().collect()),
+                    ("range", lo.into_iter().chain(hi).collect()),
+                ]
+            }
             LinearObject::Segment(s) => {
                 vec![("a", s.a().iter().collect()), ("b", s.b().iter().collect())]
             }

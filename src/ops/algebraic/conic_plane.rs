@@ -71,7 +71,7 @@ pub(crate) fn cross(a: &V3, b: &V3) -> V3 {
     })
 }
 
-fn is_zero(v: &V3) -> bool {
+pub(super) fn is_zero(v: &V3) -> bool {
     v.iter().all(|x| x.cmp0() == Ordering::Equal)
 }
 
@@ -122,14 +122,14 @@ impl ExactPlane {
 }
 
 /// The conic's frame, exactly: origin, `X̃`, `Ỹ`, `Z̃`.
-struct ExactFrame {
-    p: V3,
-    x: V3,
-    y: V3,
-    z: V3,
+pub(super) struct ExactFrame {
+    pub(super) p: V3,
+    pub(super) x: V3,
+    pub(super) y: V3,
+    pub(super) z: V3,
 }
 
-fn exact_frame(c: &Analytic) -> ExactFrame {
+pub(super) fn exact_frame(c: &Analytic) -> ExactFrame {
     let f = c.frame();
     let q = |v: [f64; 3]| v3(|i| Rational::from_f64(v[i]).unwrap_or_default());
     let z = q(f.axis());
@@ -144,20 +144,20 @@ fn exact_frame(c: &Analytic) -> ExactFrame {
 }
 
 /// A common point before its parameters: the line parameter `s`.
-struct Hit {
-    s: RealRoot,
-    multiplicity: u32,
+pub(super) struct Hit {
+    pub(super) s: RealRoot,
+    pub(super) multiplicity: u32,
     /// Exact signs of the local `x` and `y`.
-    sx: Ordering,
-    sy: Ordering,
+    pub(super) sx: Ordering,
+    pub(super) sy: Ordering,
 }
 
 /// Everything the parameters of a hit need.
-struct Local<'a> {
-    frame: &'a ExactFrame,
-    o: &'a V3,
-    m: &'a V3,
-    shape: CurveShape,
+pub(super) struct Local<'a> {
+    pub(super) frame: &'a ExactFrame,
+    pub(super) o: &'a V3,
+    pub(super) m: &'a V3,
+    pub(super) shape: CurveShape,
 }
 
 impl Local<'_> {
@@ -216,7 +216,7 @@ impl Local<'_> {
 
 /// The restricted equation of the conic on `L` (module doc), with the local `X(s)`,
 /// `Y(s)` (unnormalised).
-fn restricted(
+pub(super) fn restricted(
     shape: CurveShape,
     f: &ExactFrame,
     o: &V3,
@@ -256,7 +256,12 @@ fn restricted(
 }
 
 /// The hits of `L` on the conic (branch and vertex rules of the module doc).
-fn hits(shape: CurveShape, p: &Polynomial, fx: &Polynomial, fy: &Polynomial) -> Vec<Hit> {
+pub(super) fn hits(
+    shape: CurveShape,
+    p: &Polynomial,
+    fx: &Polynomial,
+    fy: &Polynomial,
+) -> Vec<Hit> {
     let roots = real_roots(p).unwrap_or_default();
     roots
         .into_iter()
@@ -264,23 +269,11 @@ fn hits(shape: CurveShape, p: &Polynomial, fx: &Polynomial, fy: &Polynomial) -> 
             let sx = sign_at_root(&mut s, fx);
             let sy = sign_at_root(&mut s, fy);
             let mut multiplicity = s.multiplicity();
-            match shape {
-                CurveShape::Hyperbola { second_branch, .. } => {
-                    let want = if second_branch {
-                        Ordering::Less
-                    } else {
-                        Ordering::Greater
-                    };
-                    if sx != want {
-                        return None;
-                    }
-                }
-                CurveShape::Parabola { .. } => match sx {
-                    Ordering::Less => return None,
-                    Ordering::Equal => multiplicity /= 2,
-                    Ordering::Greater => {}
-                },
-                _ => {}
+            if !on_branch(shape, sx) {
+                return None;
+            }
+            if matches!(shape, CurveShape::Parabola { .. }) && sx == Ordering::Equal {
+                multiplicity /= 2;
             }
             Some(Hit {
                 s,
@@ -290,6 +283,23 @@ fn hits(shape: CurveShape, p: &Polynomial, fx: &Polynomial, fy: &Polynomial) -> 
             })
         })
         .collect()
+}
+
+/// Whether a zero of the restricted equation with local `x` of sign `sx` is a point of
+/// the curve: the hyperbola's branch (`sign x = ±1`), the parabola's true factor
+/// (`x ≥ 0`, module doc); every zero for circle and ellipse.
+pub(super) fn on_branch(shape: CurveShape, sx: Ordering) -> bool {
+    match shape {
+        CurveShape::Hyperbola { second_branch, .. } => {
+            sx == if second_branch {
+                Ordering::Less
+            } else {
+                Ordering::Greater
+            }
+        }
+        CurveShape::Parabola { .. } => sx != Ordering::Less,
+        _ => true,
+    }
 }
 
 /// `Y/|Ỹ|` compared with the double `e`, exactly (the parabola's parameter).
@@ -325,7 +335,7 @@ fn exact_y(s: &RealRoot, sy: Ordering, fy: &Polynomial, yy: &Rational) -> Option
 /// The correctly rounded curve parameters of a hit inside the curve's domain (an arc
 /// or a long domain may pass a point more than once); `None`: Ziv's loop reached its
 /// cap.
-fn curve_params(
+pub(super) fn curve_params(
     curve: &Analytic,
     local: &Local<'_>,
     hit: &Hit,
@@ -444,7 +454,14 @@ pub(crate) fn conic_plane(
     let mut points = Vec::new();
     for hit in hits(shape, &p, &fx, &fy) {
         for t in curve_params(curve, &local, &hit, &fy)? {
-            points.push(point(&hit, &o, &m, t, plane_affine.as_ref(), curve_first));
+            points.push(point(
+                &hit,
+                &o,
+                &m,
+                t,
+                plane_affine.as_ref().map(|a| &a[..]),
+                curve_first,
+            ));
         }
     }
     Some(Certified::exact(
@@ -454,14 +471,15 @@ pub(crate) fn conic_plane(
     ))
 }
 
-/// One reported point: coordinates `o + s·m` and the plane's `(a, b)` correctly rounded,
-/// the curve parameter `t`, in input order.
-fn point(
+/// One reported point: coordinates `o + s·m` and the other object's parameters (affine
+/// in `s`: the plane's `(a, b)`, a line's `t`) correctly rounded, the curve parameter
+/// `t`, in input order.
+pub(super) fn point(
     hit: &Hit,
     o: &V3,
     m: &V3,
     t: Rounded,
-    plane: Option<&[[Rational; 2]; 2]>,
+    plane: Option<&[[Rational; 2]]>,
     curve_first: bool,
 ) -> Point {
     let mut s = hit.s.clone();

@@ -29,6 +29,7 @@ mod exact_spline;
 mod foot2;
 mod kquad;
 mod line;
+mod line_conic3;
 mod line_surface;
 mod on_surface;
 pub(crate) mod pairs;

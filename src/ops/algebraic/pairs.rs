@@ -28,6 +28,7 @@ use crate::num::round::round_rational;
 use crate::num::Interval;
 use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
 use crate::ops::closed_surface::is_closed_shell;
+use crate::ops::rational::exact::compare_root as compare;
 use crate::ops::rational::rounding::PRECISION_CAP;
 use crate::ops::shape::{Linear, LinearObject, Shape};
 use crate::surface::frame::Frame;
@@ -146,24 +147,6 @@ pub(super) fn surface_params(shape: &Closed, p: &[Interval; 3]) -> Vec<(f64, [f6
         (v.midpoint(), [v.lo(), v.hi()])
     };
     vec![param(u), v]
-}
-
-/// Compare the root `t` with the rational `a`, exactly (refining an irrational root's
-/// isolating interval until `a` lies outside it).
-fn compare(t: &mut RealRoot, a: &Rational) -> Ordering {
-    loop {
-        let (lo, hi) = t.interval();
-        if lo == hi {
-            return lo.cmp(a);
-        }
-        if lo >= *a {
-            return Ordering::Greater;
-        }
-        if hi <= *a {
-            return Ordering::Less;
-        }
-        t.refine();
-    }
 }
 
 fn in_range(t: &RealRoot, range: &Option<[Rational; 2]>) -> bool {
@@ -363,13 +346,22 @@ pub(super) fn line_surface_exact(
 /// A space curve against a plane of the linear kernel, exactly where the restriction
 /// is algebraic: the framed conics ([`super::conic_plane`]); `None` for other pairs,
 /// and for a Bézier or NURBS curve whose rounding is still refining at `deadline`.
+/// Against a line, ray or segment of space: the framed conics
+/// ([`super::line_conic3`]).
 pub(crate) fn curve_plane(
     plane: &Linear,
     curve: &crate::curve::AnyCurve3,
     curve_first: bool,
     deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
-    let plane = super::conic_plane::exact_plane(plane)?;
+    let Some(plane) = super::conic_plane::exact_plane(plane) else {
+        return match curve {
+            crate::curve::AnyCurve3::Analytic(c) => {
+                super::line_conic3::line_conic(plane, c, curve_first)
+            }
+            _ => None,
+        };
+    };
     match curve {
         crate::curve::AnyCurve3::Analytic(c) => {
             super::conic_plane::conic_plane(c, &plane, curve_first)

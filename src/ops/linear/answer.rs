@@ -1,11 +1,12 @@
 //! Results of the linear kernels → [`Answer`]s: each kind of result is written once,
 //! for both kernels (their numbers are [`Q`]s).
 
-use nalgebra::Vector2;
 use rug::Rational;
 
 use super::kernel::{Len, Q};
 use crate::certificate::Certified;
+use crate::error::GeomError;
+use crate::geom::line_line::{LineLine, LineLineEmpty};
 use crate::geom::line_plane::{LinePlane, LinePlanePoint};
 use crate::geom::lines2::{Empty2, Intersection2};
 use crate::geom::plane_plane::{ParamLine as KernelParamLine, PlaneLine, PlanePlane};
@@ -179,9 +180,9 @@ pub(crate) fn three_planes(c: Certified<ThreePlanes<Q>>) -> Certified<Answer> {
     }
 }
 
-fn point2(p: &Vector2<Q>, t1: &Q, t2: &Q) -> Point {
+fn point2(p: &[Q], t1: &Q, t2: &Q) -> Point {
     point(
-        p.as_slice(),
+        p,
         vec![
             Some(std::slice::from_ref(t1)),
             Some(std::slice::from_ref(t2)),
@@ -196,7 +197,7 @@ pub(crate) fn lines2<T: Coord>(
 ) -> Certified<Answer> {
     match &c.value {
         Intersection2::Point { point, t1, t2 } => {
-            c.clone_with(Answer::Points(vec![point2(point, t1, t2)]))
+            c.clone_with(Answer::Points(vec![point2(point.as_slice(), t1, t2)]))
         }
         Intersection2::Segment {
             a,
@@ -204,14 +205,56 @@ pub(crate) fn lines2<T: Coord>(
             a_params,
             b_params,
         } => c.clone_with(Answer::Segment(SegmentAnswer {
-            a: point2(a, &a_params[0], &a_params[1]),
-            b: point2(b, &b_params[0], &b_params[1]),
+            a: point2(a.as_slice(), &a_params[0], &a_params[1]),
+            b: point2(b.as_slice(), &b_params[0], &b_params[1]),
         })),
         Intersection2::Line => c.clone_with(Answer::Line(carrier2(first))),
         Intersection2::Empty(Empty2::Parallel) => empty(&c, "parallel"),
         Intersection2::Empty(Empty2::CollinearDisjoint) => empty(&c, "collinear_disjoint"),
         Intersection2::Empty(Empty2::OutsideDomain { .. }) => empty(&c, "extensions_meet"),
     }
+}
+
+/// Two 3D lines, rays, ranged lines or segments (OPERATIONS.md §6.1–6.2 in space,
+/// [`crate::geom::line_line`]): a crossing (`points`), a collinear overlap (`segment`),
+/// two identical unbounded lines (`coincident`), or `empty` with the kernel's reason
+/// (`parallel`, `skew`, `collinear_disjoint`, `extensions_meet`). A collinear overlap
+/// that is a ray (a ray against a collinear line or ray) has no kind in the answer
+/// format: refused as `unsupported` rather than reported as more or less than it is.
+pub(crate) fn line_line(c: Certified<LineLine<Q>>) -> Result<Certified<Answer>, GeomError> {
+    Ok(match &c.value {
+        LineLine::Point(p) => c.clone_with(Answer::Points(vec![point2(
+            p.point.as_slice(),
+            &p.t1,
+            &p.t2,
+        )])),
+        LineLine::Segment {
+            a,
+            b,
+            a_params,
+            b_params,
+        } => c.clone_with(Answer::Segment(SegmentAnswer {
+            a: point2(a.as_slice(), &a_params[0], &a_params[1]),
+            b: point2(b.as_slice(), &b_params[0], &b_params[1]),
+        })),
+        LineLine::Line => {
+            let mut r = c.clone_with(Answer::Coincident);
+            r.reason = Some("the two lines coincide".into());
+            r
+        }
+        LineLine::Ray { .. } => {
+            return Err(GeomError::Unsupported {
+                field: "objects".into(),
+                reason: "the two collinear objects overlap in a ray, which the answer format \
+                         has no kind for"
+                    .into(),
+            })
+        }
+        LineLine::Empty(LineLineEmpty::Parallel) => empty(&c, "parallel"),
+        LineLine::Empty(LineLineEmpty::Skew) => empty(&c, "skew"),
+        LineLine::Empty(LineLineEmpty::CollinearDisjoint) => empty(&c, "collinear_disjoint"),
+        LineLine::Empty(LineLineEmpty::OutsideDomain(_)) => empty(&c, "extensions_meet"),
+    })
 }
 
 /// The carrier of a 2D line or segment.

@@ -9,6 +9,7 @@ use nalgebra::Vector3;
 use rug::Rational;
 
 use crate::certificate::{Arithmetic, Certified};
+use crate::geom::line_line::{self, LineLine};
 use crate::geom::line_plane::{self, LinePlane};
 use crate::geom::lines2::{self, Intersection2};
 use crate::geom::plane_plane::{self, dir_exponent, PlaneLine, PlanePlane};
@@ -72,6 +73,7 @@ impl Len {
 /// The two kernels behind one interface: certified on doubles, exact on rationals.
 pub(crate) trait Kernel: Coord {
     fn line_plane(l: Linear<'_, Self>, p: &Plane<Self>, keep: bool) -> Certified<LinePlane<Q>>;
+    fn line_line(a: Linear<'_, Self>, b: Linear<'_, Self>, keep: bool) -> Certified<LineLine<Q>>;
     fn plane_plane(a: &Plane<Self>, b: &Plane<Self>, keep: bool) -> Certified<PlanePlane<Q>>;
     fn three_planes(p: &[Plane<Self>; 3], keep: bool) -> Certified<ThreePlanes<Q>>;
     fn lines2(
@@ -122,6 +124,9 @@ fn map_plane_projection<S: nalgebra::Scalar, L, S2: nalgebra::Scalar, L2>(
 impl Kernel for f64 {
     fn line_plane(l: Linear<'_, f64>, p: &Plane<f64>, _: bool) -> Certified<LinePlane<Q>> {
         line_plane::intersect_line_plane(l, p).map(|v| v.map(Q::from))
+    }
+    fn line_line(a: Linear<'_, f64>, b: Linear<'_, f64>, _: bool) -> Certified<LineLine<Q>> {
+        line_line::intersect_line_line(a, b).map(|v| v.map(Q::from))
     }
     fn plane_plane(a: &Plane<f64>, b: &Plane<f64>, _: bool) -> Certified<PlanePlane<Q>> {
         plane_plane::intersect_plane_plane(a, b).map(|v| v.map(Q::from))
@@ -201,6 +206,15 @@ impl Kernel for Rational {
     ) -> Certified<LinePlane<Q>> {
         let r = ExactRounder::new(keep);
         let v = line_plane::intersect_line_plane_exact(l, p).map(|x| r.q(x));
+        r.done(v)
+    }
+    fn line_line(
+        a: Linear<'_, Rational>,
+        b: Linear<'_, Rational>,
+        keep: bool,
+    ) -> Certified<LineLine<Q>> {
+        let r = ExactRounder::new(keep);
+        let v = line_line::intersect_line_line_exact(a, b).map(|x| r.q(x));
         r.done(v)
     }
     fn plane_plane(

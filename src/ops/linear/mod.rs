@@ -82,6 +82,9 @@ fn intersect_in<T: Kernel>(
                     keep,
                 ));
             }
+            if let (Some(l), Some(m)) = (a.linear(), b.linear()) {
+                return answer::line_line(T::line_line(l, m, keep));
+            }
             if let (Some(p), Some(q)) = (a.plane(), b.plane()) {
                 return Ok(answer::plane_plane(T::plane_plane(p, q, keep)));
             }

@@ -216,3 +216,21 @@ pub(crate) fn sign_at_root(t: &mut RealRoot, p: &Polynomial) -> Ordering {
         t.refine();
     }
 }
+
+/// Compare the root `t` with the rational `a`, exactly (refining an irrational root's
+/// isolating interval until `a` lies outside it).
+pub(crate) fn compare_root(t: &mut RealRoot, a: &Rational) -> Ordering {
+    loop {
+        let (lo, hi) = t.interval();
+        if lo == hi {
+            return lo.cmp(a);
+        }
+        if lo >= *a {
+            return Ordering::Greater;
+        }
+        if hi <= *a {
+            return Ordering::Less;
+        }
+        t.refine();
+    }
+}
