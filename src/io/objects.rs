@@ -108,6 +108,7 @@ pub const OBJECT_TYPES: &[&str] = &[
     "circle2, ellipse2, bezier2, nurbs_curve2, polyline2, conic2",
     "sphere, ellipsoid, hyperboloid1, hyperboloid2, paraboloid, cylinder, cone, torus",
     "bezier_surface, nurbs_surface",
+    "revolution, extrusion, ruled",
 ];
 
 impl ObjectSpec {

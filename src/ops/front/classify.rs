@@ -57,6 +57,9 @@ fn surface_name(s: &AnySurface) -> &'static str {
         AnySurface::Bilinear(_) => "bilinear",
         AnySurface::Bezier(_) => "bezier_surface",
         AnySurface::Nurbs(_) => "nurbs_surface",
+        AnySurface::Extrusion(_) => "extrusion",
+        AnySurface::Revolution(_) => "revolution",
+        AnySurface::Ruled(_) => "ruled",
     }
 }
 
