@@ -365,3 +365,310 @@ fn motion_surfaces_round_trip() {
         );
     }
 }
+
+// ---- quadric (a symmetric 4×4 matrix) --------------------------------------------
+
+/// `x ↦ Σ w_i (x_i − c_i)² − k` as the matrix of the case format: `A = diag(w)`,
+/// `b = −w∘c`, `c₀ = Σ w_i c_i² − k` (exact for the dyadic data used here).
+fn diagonal_quadric(w: [f64; 3], c: [f64; 3], k: f64) -> String {
+    let b: [f64; 3] = std::array::from_fn(|i| -w[i] * c[i]);
+    let c0 = (0..3).map(|i| w[i] * c[i] * c[i]).sum::<f64>() - k;
+    let rows = [
+        [w[0], 0.0, 0.0, b[0]],
+        [0.0, w[1], 0.0, b[1]],
+        [0.0, 0.0, w[2], b[2]],
+        [b[0], b[1], b[2], c0],
+    ];
+    let rows: Vec<String> = rows.iter().map(|r| nums(r)).collect();
+    format!(r#"{{"type":"quadric","matrix":[{}]}}"#, rows.join(","))
+}
+
+/// What the two answers must share: status, completeness, the points with their boxes,
+/// multiplicities and exact coordinates (the quadric reports no surface parameters).
+fn same_points(q: &CaseResult, s: &CaseResult) -> Result<(), String> {
+    if q.status != "exact" || s.status != "exact" || q.complete != Some(true) {
+        return Err(format!("status {} / {}", q.status, s.status));
+    }
+    let key = |r: &CaseResult| -> Vec<String> {
+        r.points
+            .iter()
+            .flatten()
+            .map(|p| {
+                format!(
+                    "{:?} {:?} {} {:?}",
+                    p.xyz,
+                    p.bounds,
+                    p.multiplicity,
+                    p.exact.as_ref().map(|e| &e.xyz)
+                )
+            })
+            .collect()
+    };
+    if key(q) == key(s) {
+        Ok(())
+    } else {
+        Err(format!("quadric {:?}\nnamed   {:?}", key(q), key(s)))
+    }
+}
+
+/// Random lines and segments against spheres and axis-aligned ellipsoids given as
+/// matrices: the same exact answer (same numbers, bit for bit) as the named surface;
+/// every fourth case scaled by 2^±500 or 2^±300.
+#[test]
+fn lines_against_spheres_and_ellipsoids_as_matrices() {
+    let mut g = Gen::new(0x16_a0);
+    let mut fails = Failures::default();
+    let mut points = 0;
+    for i in 0..cases(120) {
+        let s = if i % 4 == 3 {
+            truth_support::conics::magnitude(i / 4)
+        } else {
+            1.0
+        };
+        let c = g.vec::<3>(-1.0, 1.0, 4).map(|x| x * s);
+        let semi = [[1.0, 1.0, 1.0], [2.0, 0.5, 1.0], [0.25, 1.0, 4.0]][i % 3];
+        let semi = semi.map(|x| x * s);
+        let w = semi.map(|a| 1.0 / (a * a));
+        let quadric = diagonal_quadric(w, c, 1.0);
+        let named = if i % 3 == 0 {
+            format!(
+                r#"{{"type":"sphere","center":{},"radius":{}}}"#,
+                nums(&c),
+                num(semi[0])
+            )
+        } else {
+            format!(
+                r#"{{"type":"ellipsoid","center":{},"a":{},"b":{},"c":{}}}"#,
+                nums(&c),
+                num(semi[0]),
+                num(semi[1]),
+                num(semi[2])
+            )
+        };
+        let off = g.vec::<3>(-0.5, 0.5, 5);
+        let o: [f64; 3] = std::array::from_fn(|j| c[j] + off[j] * s);
+        let d = g.vec::<3>(-1.0, 1.0, 4).map(|x| x * s);
+        if d == [0.0; 3] {
+            continue;
+        }
+        let line = if i % 2 == 0 {
+            format!(
+                r#"{{"type":"line","origin":{},"dir":{}}}"#,
+                nums(&o),
+                nums(&d)
+            )
+        } else {
+            let b: [f64; 3] = std::array::from_fn(|j| o[j] + 4.0 * d[j]);
+            format!(r#"{{"type":"segment","a":{},"b":{}}}"#, nums(&o), nums(&b))
+        };
+        let case = |k: &str, s: &str| {
+            format!(r#"{{"id":"q{i}{k}","op":"intersect","objects":[{line},{s}]}}"#)
+        };
+        let (cq, cs) = (case("q", &quadric), case("s", &named));
+        let (rq, rs) = (solve(&cq), solve(&cs));
+        points += count(&rq);
+        fails.check(same_points(&rq, &rs), &cq, &rq);
+    }
+    fails.finish("lines against spheres and ellipsoids as matrices");
+    assert!(points > 120, "too few points: {points}");
+}
+
+/// Tangent lines of a sphere given as a matrix — a proven double root — and the same
+/// lines moved by one ulp inward (two simple crossings) and outward (none); exact.
+#[test]
+fn tangents_to_a_quadric_and_one_ulp_off() {
+    let mut g = Gen::new(0x16_b0);
+    for i in 0..cases(60) {
+        let c = g.vec::<3>(-2.0, 2.0, 4);
+        let r = g.dyadic(0.25, 2.0, 4);
+        let quadric = diagonal_quadric([1.0; 3], c, r * r);
+        // The tangent at c + r·e_x, along a direction in the plane x = const.
+        let d = [0.0, g.dyadic(-1.0, 1.0, 3), g.dyadic(0.125, 1.0, 3)];
+        let x = c[0] + r;
+        for (shift, expect) in [(0i32, 1usize), (-1, 2), (1, 0)] {
+            let ox = match shift {
+                0 => x,
+                -1 => x.next_down(),
+                _ => x.next_up(),
+            };
+            let o = [ox, c[1], c[2]];
+            let case = format!(
+                r#"{{"id":"t{i}{shift}","op":"intersect","objects":[{{"type":"line","origin":{},"dir":{}}},{quadric}]}}"#,
+                nums(&o),
+                nums(&d)
+            );
+            let res = solve(&case);
+            assert_eq!(res.status, "exact", "{case}: {res:?}");
+            assert_eq!(count(&res), expect, "{case}: {res:?}");
+            let ps = res.points.clone().unwrap_or_default();
+            if shift == 0 {
+                assert_eq!(ps[0].multiplicity, 2, "{case}");
+                assert!(ps[0].tangent, "{case}");
+                assert_eq!(ps[0].xyz, vec![x, c[1], c[2]], "{case}");
+            } else {
+                assert!(ps.iter().all(|p| p.multiplicity == 1), "{case}");
+            }
+        }
+    }
+}
+
+/// The rulings of the hyperboloid `x² + y² − z² = 25` (and of the cone `x² + y² = z²`,
+/// and a plane pair `x² = 1`) lie on it: a line is `coincident`, a segment is itself.
+#[test]
+fn rulings_lie_on_quadrics_given_as_matrices() {
+    let hyperboloid = diagonal_quadric([1.0, 1.0, -1.0], [0.0; 3], 25.0);
+    let cone = diagonal_quadric([1.0, 1.0, -1.0], [0.0; 3], 0.0);
+    let planes = diagonal_quadric([1.0, 0.0, 0.0], [0.0; 3], 1.0);
+    // Through (a, b, 0) along (−b, a, ±5), a² + b² = 25 (Pythagorean, exact).
+    for (cs, sn) in [
+        (5.0, 0.0),
+        (3.0, 4.0),
+        (-4.0, 3.0),
+        (0.0, -5.0),
+        (-3.0, -4.0),
+    ] {
+        for sign in [5.0, -5.0] {
+            let o = [cs, sn, 0.0];
+            let d = [-sn, cs, sign];
+            let line = format!(
+                r#"{{"type":"line","origin":{},"dir":{}}}"#,
+                nums(&o),
+                nums(&d)
+            );
+            let r = solve(&format!(
+                r#"{{"id":"h","op":"intersect","objects":[{line},{hyperboloid}]}}"#
+            ));
+            assert_eq!((r.status, r.kind), ("exact", Some("line")), "{line}: {r:?}");
+            let seg = format!(
+                r#"{{"type":"segment","a":{},"b":{}}}"#,
+                nums(&o),
+                nums(&[o[0] + d[0], o[1] + d[1], o[2] + d[2]])
+            );
+            let r = solve(&format!(
+                r#"{{"id":"s","op":"intersect","objects":[{hyperboloid},{seg}]}}"#
+            ));
+            assert_eq!(
+                (r.status, r.kind),
+                ("exact", Some("segment")),
+                "{seg}: {r:?}"
+            );
+            // A generator of the cone through the apex.
+            let gen = format!(
+                r#"{{"type":"line","origin":[0,0,0],"dir":{}}}"#,
+                nums(&[cs, sn, 5.0])
+            );
+            let r = solve(&format!(
+                r#"{{"id":"c","op":"intersect","objects":[{gen},{cone}]}}"#
+            ));
+            assert_eq!((r.status, r.kind), ("exact", Some("line")), "{gen}: {r:?}");
+        }
+    }
+    // The plane pair x = ±1: a line in x = 1 lies on it; a line across meets each once.
+    let on = r#"{"type":"line","origin":[1,2,3],"dir":[0,1,-1]}"#;
+    let r = solve(&format!(
+        r#"{{"id":"p","op":"intersect","objects":[{on},{planes}]}}"#
+    ));
+    assert_eq!((r.status, r.kind), ("exact", Some("line")), "{r:?}");
+    let across = r#"{"type":"line","origin":[0,2,3],"dir":[1,1,-1]}"#;
+    let r = solve(&format!(
+        r#"{{"id":"p","op":"intersect","objects":[{across},{planes}]}}"#
+    ));
+    assert_eq!(r.status, "exact");
+    let xs: Vec<f64> = r.points.iter().flatten().map(|p| p.xyz[0]).collect();
+    assert_eq!(xs, vec![-1.0, 1.0], "{r:?}");
+}
+
+/// Points against quadrics given as matrices: on, inside, outside, exactly — points on
+/// the sphere `x² + y² + z² = 25` (Pythagorean) and their neighbours one ulp away.
+#[test]
+fn classify_points_against_a_quadric_exactly() {
+    use geocert::ops::{classify, Answer, Options, Position, Side};
+    let value: serde_json::Value =
+        serde_json::from_str(&diagonal_quadric([1.0; 3], [0.0; 3], 25.0)).expect("json");
+    let shell =
+        geocert::io::shape(&parse_object(value, "shell").expect("reads"), "shell").expect("builds");
+    let side = |p: [f64; 3]| {
+        let r = classify(&Position::Double(p.to_vec()), &shell, &Options::default()).expect("ok");
+        assert_eq!(r.status, geocert::Status::Exact);
+        match r.value {
+            Answer::Side(s, _) => s,
+            other => panic!("{other:?}"),
+        }
+    };
+    for p in [
+        [3.0, 4.0, 0.0],
+        [0.0, -3.0, 4.0],
+        [-4.0, 0.0, 3.0],
+        [5.0, 0.0, 0.0],
+    ] {
+        assert_eq!(side(p), Side::On, "{p:?}");
+        for k in 0..3 {
+            if p[k] == 0.0 {
+                continue;
+            }
+            let mut out = p;
+            out[k] = if p[k] > 0.0 {
+                p[k].next_up()
+            } else {
+                p[k].next_down()
+            };
+            assert_eq!(side(out), Side::Outside, "{out:?}");
+            let mut inn = p;
+            inn[k] = if p[k] > 0.0 {
+                p[k].next_down()
+            } else {
+                p[k].next_up()
+            };
+            assert_eq!(side(inn), Side::Inside, "{inn:?}");
+        }
+    }
+    assert_eq!(side([0.0; 3]), Side::Inside);
+    assert_eq!(side([1e300, 0.0, 0.0]), Side::Outside);
+}
+
+#[test]
+fn bad_quadrics_are_typed_errors_naming_the_field() {
+    let cases = [
+        (
+            r#"{"type":"quadric","matrix":[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0]]}"#,
+            "objects[1].matrix[3]",
+        ),
+        (
+            r#"{"type":"quadric","matrix":[[1,2,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]]}"#,
+            "objects[1].matrix[0][1]",
+        ),
+        (
+            r#"{"type":"quadric","matrix":[[0,0,0,0],[0,0,0,0],[0,0,0,0],[0,0,0,0]]}"#,
+            "objects[1].matrix",
+        ),
+        (
+            r#"{"type":"quadric","matrix":[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,"1/3"]]}"#,
+            "objects[1].matrix[3][3]",
+        ),
+        (r#"{"type":"quadric"}"#, "objects[1]"),
+        (
+            r#"{"type":"quadric","matrix":[[1,0,0,0],[0,1,0,0],[0,0,1,0],[0,0,0,-1]],"center":[0,0,0]}"#,
+            "objects[1]",
+        ),
+    ];
+    for (json, field) in cases {
+        let e = refused(json);
+        assert!(
+            e.field().starts_with(field),
+            "{json}: {e} (field {})",
+            e.field()
+        );
+    }
+    // Operations the quadric does not take: typed `unsupported`, naming the object.
+    let sphere = diagonal_quadric([1.0; 3], [0.0; 3], 1.0);
+    let circle = r#"{"type":"circle","center":[0,0,0],"radius":2,"axis":[1,0,0]}"#;
+    let r = solve(&format!(
+        r#"{{"id":"u","op":"intersect","objects":[{circle},{sphere}]}}"#
+    ));
+    let e = r.error.as_ref().expect("an error");
+    assert_eq!(
+        (e.kind, e.field.as_str()),
+        ("unsupported", "objects[1].type"),
+        "{r:?}"
+    );
+}

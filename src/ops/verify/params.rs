@@ -30,7 +30,7 @@ pub fn image(shape: &Shape, params: &[Rational]) -> Result<Option<Region>, Strin
         Shape::Curve(c) => curve::<3, _>(c, params)?,
         Shape::Curve2(c) => curve::<2, _>(c, params)?,
         Shape::Surface(s) => surface(s, params)?,
-        Shape::Conic2(_) | Shape::Polyhedron(_) => {
+        Shape::Conic2(_) | Shape::Polyhedron(_) | Shape::Quadric(_) => {
             return Err("the object has no parameters".into());
         }
     };
