@@ -672,3 +672,50 @@ fn bad_quadrics_are_typed_errors_naming_the_field() {
         "{r:?}"
     );
 }
+
+// ---- a plane with a domain ---------------------------------------------------------
+
+/// Segments across the patch `origin + u·U + v·V`, `(u, v) ∈ [1/4, 3/4] × [−1, 1/2]`
+/// (skew `U`, `V`): the crossing of the whole plane is exact (dyadic data), inside the
+/// patch it is the one point, outside none; crossings within `1e-9` of the border are
+/// left out.
+#[test]
+fn segments_across_a_bounded_plane() {
+    let (origin, uu, vv) = ([0.5, -0.25, 1.0], [1.0, 0.5, 0.0], [0.0, 1.0, 0.25]);
+    let patch = format!(
+        r#"{{"type":"plane","origin":{},"u":{},"v":{},"domain":[[0.25,0.75],[-1,0.5]]}}"#,
+        nums(&origin),
+        nums(&uu),
+        nums(&vv)
+    );
+    let mut g = Gen::new(0x16_c0);
+    let mut fails = Failures::default();
+    let (mut hits, mut misses) = (0, 0);
+    for i in 0..cases(40) {
+        // The crossing at (u, v) on the plane, a segment through it across the plane.
+        let (u, v) = (g.dyadic(0.0, 1.0, 5), g.dyadic(-1.25, 0.75, 5));
+        if [u - 0.25, u - 0.75, v + 1.0, v - 0.5].iter().any(|x| x.abs() < 1e-9) {
+            continue;
+        }
+        let x: [f64; 3] = std::array::from_fn(|j| origin[j] + u * uu[j] + v * vv[j]);
+        let d = [g.dyadic(-0.5, 0.5, 3), g.dyadic(-0.5, 0.5, 3), 1.0];
+        let a: [f64; 3] = std::array::from_fn(|j| x[j] - d[j]);
+        let b: [f64; 3] = std::array::from_fn(|j| x[j] + d[j]);
+        let inside = (0.25..=0.75).contains(&u) && (-1.0..=0.5).contains(&v);
+        let truths = if inside { vec![x.iter().map(|&c| fl(c)).collect()] } else { vec![] };
+        if inside {
+            hits += 1;
+        } else {
+            misses += 1;
+        }
+        let case = format!(
+            r#"{{"id":"b{i}","op":"intersect","objects":[{{"type":"segment","a":{},"b":{}}},{patch}]}}"#,
+            nums(&a),
+            nums(&b)
+        );
+        let r = solve(&case);
+        fails.check(check(&r, &truths), &case, &r);
+    }
+    fails.finish("segments across a bounded plane");
+    assert!(hits > 8 && misses > 8, "{hits} hits, {misses} misses");
+}
