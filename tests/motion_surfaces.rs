@@ -694,7 +694,10 @@ fn segments_across_a_bounded_plane() {
     for i in 0..cases(40) {
         // The crossing at (u, v) on the plane, a segment through it across the plane.
         let (u, v) = (g.dyadic(0.0, 1.0, 5), g.dyadic(-1.25, 0.75, 5));
-        if [u - 0.25, u - 0.75, v + 1.0, v - 0.5].iter().any(|x| x.abs() < 1e-9) {
+        if [u - 0.25, u - 0.75, v + 1.0, v - 0.5]
+            .iter()
+            .any(|x| x.abs() < 1e-9)
+        {
             continue;
         }
         let x: [f64; 3] = std::array::from_fn(|j| origin[j] + u * uu[j] + v * vv[j]);
@@ -702,7 +705,11 @@ fn segments_across_a_bounded_plane() {
         let a: [f64; 3] = std::array::from_fn(|j| x[j] - d[j]);
         let b: [f64; 3] = std::array::from_fn(|j| x[j] + d[j]);
         let inside = (0.25..=0.75).contains(&u) && (-1.0..=0.5).contains(&v);
-        let truths = if inside { vec![x.iter().map(|&c| fl(c)).collect()] } else { vec![] };
+        let truths = if inside {
+            vec![x.iter().map(|&c| fl(c)).collect()]
+        } else {
+            vec![]
+        };
         if inside {
             hits += 1;
         } else {

@@ -107,21 +107,24 @@ fn curve(
     parse_curve3(required(value, field, name, kind)?, &join(field, name))
 }
 
+/// One motion surface as written.
+#[derive(Debug, Clone, PartialEq)]
+pub enum MotionSpec {
+    Revolution(RevolutionSpec),
+    Extrusion(ExtrusionSpec),
+    Ruled(RuledSpec),
+}
+
 /// Read a `revolution`, `extrusion` or `ruled` (its `type` already removed, given as
 /// `kind`), naming errors below `field`.
-pub fn parse_motion(
-    value: Value,
-    field: &str,
-    kind: &str,
-) -> Result<super::surface::SurfaceSpec, GeomError> {
-    use super::surface::SurfaceSpec;
+pub fn parse_motion(value: Value, field: &str, kind: &str) -> Result<MotionSpec, GeomError> {
     let raw: Raw = deserialize_at(value, field)?;
     Ok(match kind {
         "revolution" => {
             refuse(raw.a.is_some(), field, "a", kind)?;
             refuse(raw.b.is_some(), field, "b", kind)?;
             refuse(raw.dir.is_some(), field, "dir", kind)?;
-            SurfaceSpec::Revolution(RevolutionSpec {
+            MotionSpec::Revolution(RevolutionSpec {
                 profile: curve(raw.profile, field, "profile", kind)?,
                 origin: required(raw.origin, field, "origin", kind)?,
                 axis: required(raw.axis, field, "axis", kind)?,
@@ -133,7 +136,7 @@ pub fn parse_motion(
             refuse(raw.b.is_some(), field, "b", kind)?;
             refuse(raw.origin.is_some(), field, "origin", kind)?;
             refuse(raw.axis.is_some(), field, "axis", kind)?;
-            SurfaceSpec::Extrusion(ExtrusionSpec {
+            MotionSpec::Extrusion(ExtrusionSpec {
                 profile: curve(raw.profile, field, "profile", kind)?,
                 dir: required(raw.dir, field, "dir", kind)?,
                 domain: raw.domain,
@@ -144,7 +147,7 @@ pub fn parse_motion(
             refuse(raw.origin.is_some(), field, "origin", kind)?;
             refuse(raw.axis.is_some(), field, "axis", kind)?;
             refuse(raw.dir.is_some(), field, "dir", kind)?;
-            SurfaceSpec::Ruled(RuledSpec {
+            MotionSpec::Ruled(RuledSpec {
                 a: curve(raw.a, field, "a", kind)?,
                 b: curve(raw.b, field, "b", kind)?,
                 domain: raw.domain,

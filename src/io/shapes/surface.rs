@@ -16,7 +16,7 @@
 
 use serde::{Deserialize, Serialize};
 
-use super::motion::{parse_motion, ExtrusionSpec, RevolutionSpec, RuledSpec};
+use super::motion::{parse_motion, ExtrusionSpec, MotionSpec, RevolutionSpec, RuledSpec};
 use crate::error::{require_finite_all, GeomError};
 use crate::io::de::{deserialize_at, take_type};
 use crate::surface::bezier::BezierSurface;
@@ -278,7 +278,11 @@ pub fn parse_surface(value: &serde_json::Value, field: &str) -> Result<SurfaceSp
         "torus" => SurfaceSpec::Torus(deserialize_at(value, at)?),
         "bezier_surface" => SurfaceSpec::BezierSurface(deserialize_at(value, at)?),
         "nurbs_surface" => SurfaceSpec::NurbsSurface(deserialize_at(value, at)?),
-        "revolution" | "extrusion" | "ruled" => parse_motion(value, at, &name)?,
+        "revolution" | "extrusion" | "ruled" => match parse_motion(value, at, &name)? {
+            MotionSpec::Revolution(s) => SurfaceSpec::Revolution(s),
+            MotionSpec::Extrusion(s) => SurfaceSpec::Extrusion(s),
+            MotionSpec::Ruled(s) => SurfaceSpec::Ruled(s),
+        },
         other => {
             return Err(GeomError::Unsupported {
                 field: type_field,
