@@ -84,7 +84,10 @@ fn bits(o: &ObjectSpec) -> Vec<u64> {
         ObjectSpec::Segment2(s) => [n(&s.a), n(&s.b)].concat(),
         ObjectSpec::Polyhedron(p) => p.vertices.iter().flat_map(|v| n(v)).collect(),
         // The linear generators never write curved objects.
-        ObjectSpec::Curve3(_) | ObjectSpec::Curve2(_) | ObjectSpec::Surface(_) => vec![],
+        ObjectSpec::Curve3(_)
+        | ObjectSpec::Curve2(_)
+        | ObjectSpec::Surface(_)
+        | ObjectSpec::Quadric(_) => vec![],
     }
 }
 

@@ -130,6 +130,29 @@ fn space_objects() -> Vec<(&'static str, Value)> {
             "weights": [[1, 0.8, 1], [1, 0.8, 1]]}),
         ),
         (
+            "revolution",
+            json!({"type": "revolution", "profile": {"type": "segment", "a": [0.9, 0, -1], "b": [0.4, 0, 1]},
+            "origin": [0, 0, 0], "axis": z}),
+        ),
+        (
+            "extrusion",
+            json!({"type": "extrusion", "profile": {"type": "bezier", "points": [[-1, -0.5, -1], [0, 1, -1], [1, -0.5, -1]]},
+            "dir": [0, 0.2, 2]}),
+        ),
+        (
+            "ruled",
+            json!({"type": "ruled", "a": {"type": "segment", "a": [-1, -1, -0.5], "b": [1, -1, 0.5]},
+            "b": {"type": "segment", "a": [-1, 1, 0.5], "b": [1, 1, -0.5]}}),
+        ),
+        (
+            "quadric",
+            json!({"type": "quadric", "matrix": [[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 0.5, 0], [0, 0, 0, -1]]}),
+        ),
+        (
+            "plane with domain",
+            json!({"type": "plane", "origin": [0, 0, 0.1], "u": [1, 0, 0], "v": [0, 1, 0.1], "domain": [[-1, 1], [-1, 1]]}),
+        ),
+        (
             "polyhedron",
             json!({"type": "polyhedron",
             "vertices": [[-1, -1, -1], [1.5, -1, -1], [-1, 1.5, -1], [-1, -1, 1.5]],

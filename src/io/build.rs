@@ -19,6 +19,7 @@ use crate::geom::{Coord, Line, Line2, Plane, Segment, Segment2};
 use crate::num::parse::parse_rational;
 use crate::num::round::round_rational;
 use crate::ops::{Linear, LinearObject, Polyhedron, Position, Shape};
+use crate::surface::implicit::ImplicitQuadric;
 
 /// Why an object could not be built in the requested coordinate type.
 #[derive(Debug)]
@@ -106,6 +107,7 @@ pub fn shape(spec: &ObjectSpec, prefix: &str) -> Result<Shape, GeomError> {
         },
         ObjectSpec::Surface(s) => Shape::Surface(s.build().map_err(at)?),
         ObjectSpec::Polyhedron(p) => Shape::Polyhedron(polyhedron(p).map_err(at)?),
+        ObjectSpec::Quadric(q) => Shape::Quadric(ImplicitQuadric::new(q.matrix).map_err(at)?),
         linear => Shape::Linear(match linear_object::<f64>(linear) {
             Ok(o) => Linear::Double(o),
             Err(BuildError::NeedsRational) => match linear_object::<Rational>(linear) {
@@ -174,7 +176,8 @@ fn linear_object<T: FromNum>(spec: &ObjectSpec) -> Result<LinearObject<T>, Build
         ObjectSpec::Polyhedron(_)
         | ObjectSpec::Curve3(_)
         | ObjectSpec::Curve2(_)
-        | ObjectSpec::Surface(_) => {
+        | ObjectSpec::Surface(_)
+        | ObjectSpec::Quadric(_) => {
             return Err(GeomError::Unsupported {
                 field: "type".into(),
                 reason: "not a linear object".into(),

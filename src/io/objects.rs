@@ -66,6 +66,14 @@ pub struct PolyhedronSpec {
     pub faces: Vec<Vec<usize>>,
 }
 
+/// `quadric`: the implicit surface `[x 1]ᵀ Q [x 1] = 0` of a symmetric 4×4 `matrix`
+/// (doubles; validated when the case is solved: symmetric, finite, not all zero).
+#[derive(Debug, Clone, PartialEq, Deserialize, serde::Serialize)]
+#[serde(deny_unknown_fields)]
+pub struct QuadricSpec {
+    pub matrix: [[f64; 4]; 4],
+}
+
 /// One object of a case, by its `type`.
 #[derive(Debug, Clone, PartialEq)]
 #[allow(clippy::large_enum_variant)] // parsed once per object; boxing buys nothing
@@ -82,6 +90,8 @@ pub enum ObjectSpec {
     Curve2(crate::io::shapes::Curve2Spec),
     /// A surface other than a plane (doubles only).
     Surface(crate::io::shapes::surface::SurfaceSpec),
+    /// The implicit `quadric` (doubles only).
+    Quadric(QuadricSpec),
 }
 
 /// The curve types read by [`crate::io::shapes::parse_curve3`].
@@ -108,6 +118,8 @@ pub const OBJECT_TYPES: &[&str] = &[
     "circle2, ellipse2, bezier2, nurbs_curve2, polyline2, conic2",
     "sphere, ellipsoid, hyperboloid1, hyperboloid2, paraboloid, cylinder, cone, torus",
     "bezier_surface, nurbs_surface",
+    "revolution, extrusion, ruled",
+    "quadric",
 ];
 
 impl ObjectSpec {
@@ -123,6 +135,7 @@ impl ObjectSpec {
             ObjectSpec::Curve3(c) => c.type_name(),
             ObjectSpec::Curve2(c) => c.type_name(),
             ObjectSpec::Surface(c) => c.type_name(),
+            ObjectSpec::Quadric(_) => "quadric",
         }
     }
 }
@@ -136,10 +149,19 @@ pub fn parse_object(mut value: serde_json::Value, prefix: &str) -> Result<Object
     match type_name.as_str() {
         "line" => deserialize_at(value, prefix).map(ObjectSpec::Line),
         "segment" => deserialize_at(value, prefix).map(ObjectSpec::Segment),
+        // A bounded plane patch (`domain` over the (origin, u, v) parametrisation) is a
+        // surface; the linear kernel takes the unbounded plane.
+        "plane" if value.get("domain").is_some() => {
+            crate::io::shapes::surface::parse_surface(&original, prefix).map(ObjectSpec::Surface)
+        }
         "plane" => deserialize_at(value, prefix).map(ObjectSpec::Plane),
         "line2" => deserialize_at(value, prefix).map(ObjectSpec::Line2),
         "segment2" => deserialize_at(value, prefix).map(ObjectSpec::Segment2),
         "polyhedron" => deserialize_at(value, prefix).map(ObjectSpec::Polyhedron),
+        "quadric" => {
+            crate::io::shapes::refuse_exact_strings(&value, prefix)?;
+            deserialize_at(value, prefix).map(ObjectSpec::Quadric)
+        }
         other if crate::io::shapes::surface::SURFACE_TYPES.contains(&other) => {
             crate::io::shapes::surface::parse_surface(&original, prefix).map(ObjectSpec::Surface)
         }

@@ -55,6 +55,9 @@ pub enum Shape {
     Surface(AnySurface),
     /// A closed polyhedral shell.
     Polyhedron(Polyhedron),
+    /// The implicit quadric `[x 1]ᵀ Q [x 1] = 0` (no parametrisation: its points carry
+    /// no parameters).
+    Quadric(crate::surface::implicit::ImplicitQuadric),
 }
 
 /// A query point of `project` and `classify`: doubles, or exact rationals.
@@ -307,6 +310,7 @@ impl Shape {
             Shape::Conic2(_) => "conic2",
             Shape::Surface(_) => "surface",
             Shape::Polyhedron(_) => "polyhedron",
+            Shape::Quadric(_) => "quadric",
         }
     }
 
@@ -314,7 +318,11 @@ impl Shape {
     pub fn is_curved(&self) -> bool {
         matches!(
             self,
-            Shape::Curve(_) | Shape::Curve2(_) | Shape::Conic2(_) | Shape::Surface(_)
+            Shape::Curve(_)
+                | Shape::Curve2(_)
+                | Shape::Conic2(_)
+                | Shape::Surface(_)
+                | Shape::Quadric(_)
         )
     }
 }

@@ -1,16 +1,19 @@
 //! One type for every surface primitive that does not depend on a curve type
 //! ([`AnySurface`]), and for every implicit form ([`AnyImplicit`]), so that heterogeneous
 //! collections and the JSON reader need no trait objects (the traits are generic, hence
-//! not object-safe). The motion surfaces join once the concrete curve enum exists.
+//! not object-safe). The motion surfaces (§1.6: extrusion, revolution, ruled) hold their
+//! curves as [`AnyCurve3`], boxed (a curve enum is large).
 
 use super::bezier::BezierSurface;
 use super::bilinear::Bilinear;
 use super::implicit::ImplicitQuadric;
+use super::motion::{Extrusion, Revolution, Ruled};
 use super::nurbs::NurbsSurface;
 use super::plane::{ParaboloidRect, Plane};
 use super::quadrics::{Cone, Cylinder, Ellipsoid, Hyperboloid, Paraboloid, Sphere};
 use super::torus::Torus;
 use super::{Implicit, ImplicitJet, StepRule, Surface};
+use crate::curve::AnyCurve3;
 use crate::num::Real;
 
 /// A parametric surface primitive.
@@ -28,6 +31,12 @@ pub enum AnySurface {
     Bilinear(Bilinear),
     Bezier(BezierSurface),
     Nurbs(NurbsSurface),
+    /// `extrusion` (1.13): a profile swept along a vector.
+    Extrusion(Box<Extrusion<AnyCurve3>>),
+    /// `revolution` (1.14): a profile turned about an axis.
+    Revolution(Box<Revolution<AnyCurve3>>),
+    /// `ruled` (1.17): the segments between two guides.
+    Ruled(Box<Ruled<AnyCurve3, AnyCurve3>>),
 }
 
 macro_rules! each_surface {
@@ -45,6 +54,9 @@ macro_rules! each_surface {
             AnySurface::Bilinear($s) => $body,
             AnySurface::Bezier($s) => $body,
             AnySurface::Nurbs($s) => $body,
+            AnySurface::Extrusion($s) => $body,
+            AnySurface::Revolution($s) => $body,
+            AnySurface::Ruled($s) => $body,
         }
     };
 }
@@ -69,14 +81,15 @@ impl Surface for AnySurface {
         each_surface!(self, s => s.step_rules())
     }
     fn piece_breaks(&self) -> [Vec<f64>; 2] {
-        match self {
-            AnySurface::Nurbs(s) => s.piece_breaks(),
-            _ => [Vec::new(), Vec::new()],
-        }
+        each_surface!(self, s => s.piece_breaks())
     }
     fn pinned_at(&self, u: f64, v: f64) -> Option<Self> {
         match self {
             AnySurface::Nurbs(s) => s.pinned_at(u, v).map(AnySurface::Nurbs),
+            AnySurface::Extrusion(s) => s.pinned_at(u, v).map(|p| AnySurface::Extrusion(p.into())),
+            AnySurface::Revolution(s) => {
+                s.pinned_at(u, v).map(|p| AnySurface::Revolution(p.into()))
+            }
             _ => None,
         }
     }
@@ -87,7 +100,8 @@ impl Surface for AnySurface {
 
 impl AnySurface {
     /// The implicit form of the surface (§1.6), if it has one (not for bilinear, Bézier
-    /// and NURBS patches).
+    /// and NURBS patches, nor for the motion surfaces, whose implicit form depends on
+    /// their curves).
     pub fn implicit(&self) -> Option<AnyImplicit> {
         Some(match self {
             AnySurface::Plane(s) => AnyImplicit::Plane(s.clone()),
@@ -99,7 +113,12 @@ impl AnySurface {
             AnySurface::Cylinder(s) => AnyImplicit::Cylinder(s.clone()),
             AnySurface::Cone(s) => AnyImplicit::Cone(s.clone()),
             AnySurface::Torus(s) => AnyImplicit::Torus(s.clone()),
-            AnySurface::Bilinear(_) | AnySurface::Bezier(_) | AnySurface::Nurbs(_) => return None,
+            AnySurface::Bilinear(_)
+            | AnySurface::Bezier(_)
+            | AnySurface::Nurbs(_)
+            | AnySurface::Extrusion(_)
+            | AnySurface::Revolution(_)
+            | AnySurface::Ruled(_) => return None,
         })
     }
 }

@@ -3,8 +3,15 @@
 //! and a point). Each is generic over its curves (`C: Curve<3>`, ARCHITECTURE.md: decorators
 //! generic over their parts), so one formula serves every curve and number type.
 //!
-//! Interval evaluation encloses: the curve jets enclose the curve over the parameter
-//! interval ([`Curve::jet`]), and everything else is an enclosing operation.
+//! Interval evaluation encloses: the curve jets enclose the curve and its derivatives
+//! over the parameter interval ([`Curve::jet`], whose contract holds for every curve of
+//! the format, MPFR intervals included), the fixed data (`dir`, `origin`, `axis`) are
+//! lifted as point intervals, and everything else — sums, products, `cos`/`sin` of the
+//! angle, the normalisation of the axis — is an outward-rounded operation of the number
+//! type ([`Real`]), so every entry of [`Surface::jet`] encloses the true value over the
+//! box. A profile's seams and knots carry over: the profile's rounded domain ends
+//! ([`Curve::domain_rounded`]) and its pieces ([`Curve::piece_breaks`],
+//! [`Curve::pinned_at`]) are those of the surface in the profile's direction.
 
 use super::validate::{interval, FULL_TURN};
 use super::{StepRule, Surface};
@@ -49,6 +56,19 @@ impl<C: Curve<3>> Surface for Extrusion<C> {
     }
     fn step_rules(&self) -> [StepRule; 2] {
         [StepRule::CoordinateCurve, StepRule::WholeRange]
+    }
+    fn domain_rounded(&self) -> [bool; 2] {
+        [self.profile.domain_rounded(), false]
+    }
+    fn piece_breaks(&self) -> [Vec<f64>; 2] {
+        [self.profile.piece_breaks(), Vec::new()]
+    }
+    fn pinned_at(&self, u: f64, _v: f64) -> Option<Self> {
+        let profile = self.profile.pinned_at(u)?;
+        Some(Extrusion {
+            profile,
+            dir: self.dir,
+        })
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let c = self.profile.jet(u, order.min(2));
@@ -104,6 +124,16 @@ impl<C: Curve<3>> Revolution<C> {
     pub fn profile(&self) -> &C {
         &self.profile
     }
+    pub fn origin(&self) -> [f64; 3] {
+        self.origin
+    }
+    pub fn axis(&self) -> [f64; 3] {
+        self.axis
+    }
+    /// The rotation angles `[u_min, u_max]`.
+    pub fn angle(&self) -> [f64; 2] {
+        self.angle
+    }
 }
 
 impl<C: Curve<3>> Surface for Revolution<C> {
@@ -116,6 +146,22 @@ impl<C: Curve<3>> Surface for Revolution<C> {
     }
     fn step_rules(&self) -> [StepRule; 2] {
         [StepRule::Angle, StepRule::CoordinateCurve]
+    }
+    fn domain_rounded(&self) -> [bool; 2] {
+        let angle = self.angle.iter().any(|&x| crate::curve::is_angle_bound(x));
+        [angle, self.profile.domain_rounded()]
+    }
+    fn piece_breaks(&self) -> [Vec<f64>; 2] {
+        [Vec::new(), self.profile.piece_breaks()]
+    }
+    fn pinned_at(&self, _u: f64, v: f64) -> Option<Self> {
+        let profile = self.profile.pinned_at(v)?;
+        Some(Revolution {
+            profile,
+            origin: self.origin,
+            axis: self.axis,
+            angle: self.angle,
+        })
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let c = self.profile.jet(v, order.min(2));
@@ -200,6 +246,11 @@ impl<A: Curve<3>, B: Curve<3>> Surface for Ruled<A, B> {
     }
     fn is_closed(&self) -> [bool; 2] {
         [self.a.is_closed() && self.b.is_closed(), false]
+    }
+    /// `u = 1` is `t_max` of each guide: rounded when either guide's end is (a full
+    /// circle's `2π`), so the certifier covers it outward by an ulp.
+    fn domain_rounded(&self) -> [bool; 2] {
+        [self.a.domain_rounded() || self.b.domain_rounded(), false]
     }
     fn step_rules(&self) -> [StepRule; 2] {
         [StepRule::CoordinateCurve, StepRule::WholeRange]

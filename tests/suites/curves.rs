@@ -39,6 +39,8 @@ mod project_conic_exact;
 mod project_curve;
 #[path = "../rational_conics.rs"]
 mod rational_conics;
+#[path = "../space_pairs_exact.rs"]
+mod space_pairs_exact;
 #[path = "../spline_conic_exact.rs"]
 mod spline_conic_exact;
 #[path = "../walk_curve.rs"]

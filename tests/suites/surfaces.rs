@@ -27,6 +27,8 @@ mod intersect_surface_surface_certified;
 mod intersect_surface_surface_float;
 #[path = "../intersect_three_surfaces.rs"]
 mod intersect_three_surfaces;
+#[path = "../motion_surfaces.rs"]
+mod motion_surfaces;
 #[path = "../project_surface.rs"]
 mod project_surface;
 #[path = "../rational_patches.rs"]

@@ -11,6 +11,7 @@
 
 pub mod curve;
 mod curve_fields;
+pub mod motion;
 pub mod surface;
 
 pub use curve::{curve3_from_json, parse_curve2, parse_curve3, Curve2Spec, Curve3Spec, PlaneShape};

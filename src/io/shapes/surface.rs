@@ -10,12 +10,13 @@
 //!
 //! Extensions of the case format (docs/FORMAT.md; extend, never break): `elliptic_cylinder` (`a`, `b` instead
 //! of `radius`) and `hyperbolic_paraboloid` (`center + a u X + b v Y + (u² − v²) Z`,
-//! `domain` required). `revolution`, `extrusion`, `ruled` (they need the curve reader)
-//! and `quadric` are read elsewhere; a `plane` given by `normal` and `d` has no
-//! parametrisation and is refused here.
+//! `domain` required). `revolution`, `extrusion` and `ruled` are read by
+//! [`super::motion`] (they need the curve reader); a `plane` given by `normal` and `d`
+//! has no parametrisation and is refused here.
 
 use serde::{Deserialize, Serialize};
 
+use super::motion::{parse_motion, ExtrusionSpec, MotionSpec, RevolutionSpec, RuledSpec};
 use crate::error::{require_finite_all, GeomError};
 use crate::io::de::{deserialize_at, take_type};
 use crate::surface::bezier::BezierSurface;
@@ -219,6 +220,9 @@ pub enum SurfaceSpec {
     Torus(TorusSpec),
     BezierSurface(BezierSurfaceSpec),
     NurbsSurface(NurbsSurfaceSpec),
+    Revolution(RevolutionSpec),
+    Extrusion(ExtrusionSpec),
+    Ruled(RuledSpec),
 }
 
 /// The surface types [`parse_surface`] reads.
@@ -236,6 +240,9 @@ pub const SURFACE_TYPES: &[&str] = &[
     "torus",
     "bezier_surface",
     "nurbs_surface",
+    "revolution",
+    "extrusion",
+    "ruled",
 ];
 
 /// Read one surface object, naming errors below `field` (`objects[1].radius`). Unknown
@@ -271,6 +278,11 @@ pub fn parse_surface(value: &serde_json::Value, field: &str) -> Result<SurfaceSp
         "torus" => SurfaceSpec::Torus(deserialize_at(value, at)?),
         "bezier_surface" => SurfaceSpec::BezierSurface(deserialize_at(value, at)?),
         "nurbs_surface" => SurfaceSpec::NurbsSurface(deserialize_at(value, at)?),
+        "revolution" | "extrusion" | "ruled" => match parse_motion(value, at, &name)? {
+            MotionSpec::Revolution(s) => SurfaceSpec::Revolution(s),
+            MotionSpec::Extrusion(s) => SurfaceSpec::Extrusion(s),
+            MotionSpec::Ruled(s) => SurfaceSpec::Ruled(s),
+        },
         other => {
             return Err(GeomError::Unsupported {
                 field: type_field,
@@ -317,6 +329,9 @@ impl SurfaceSpec {
             SurfaceSpec::Torus(_) => "torus",
             SurfaceSpec::BezierSurface(_) => "bezier_surface",
             SurfaceSpec::NurbsSurface(_) => "nurbs_surface",
+            SurfaceSpec::Revolution(_) => "revolution",
+            SurfaceSpec::Extrusion(_) => "extrusion",
+            SurfaceSpec::Ruled(_) => "ruled",
         }
     }
 
@@ -419,6 +434,9 @@ impl SurfaceSpec {
                 &s.domain,
                 NurbsSurface::with_domain,
             )?),
+            SurfaceSpec::Revolution(s) => s.build()?,
+            SurfaceSpec::Extrusion(s) => s.build()?,
+            SurfaceSpec::Ruled(s) => s.build()?,
         })
     }
 }

@@ -27,6 +27,7 @@ pub(crate) mod curve_quadric;
 mod exact_line;
 mod exact_spline;
 mod foot2;
+pub(crate) mod implicit_quadric;
 mod kquad;
 mod line;
 mod line_conic3;

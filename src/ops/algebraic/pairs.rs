@@ -232,7 +232,7 @@ fn contained<const D: usize>(line: &ExactLine<D>, line_first: bool) -> Answer {
 }
 
 /// The answer of a line cut, the line's parameter first or second as in the input.
-fn line_cut_answer<const D: usize>(
+pub(super) fn line_cut_answer<const D: usize>(
     line: &ExactLine<D>,
     mut cut: Certified<LineCut<D>>,
     other_params: impl Fn(&LineHit<D>, &[Interval; D]) -> Rounding,

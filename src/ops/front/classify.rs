@@ -6,6 +6,7 @@ use super::points::bounds;
 use super::seeds::surface_nodes;
 use crate::certificate::{Certified, Status};
 use crate::error::GeomError;
+use crate::ops::algebraic::implicit_quadric::classify_point_quadric;
 use crate::ops::answer::{Answer, Point};
 use crate::ops::certified::CertifiedPoint;
 use crate::ops::classify::Side;
@@ -31,6 +32,23 @@ pub fn classify(
     };
     match shell {
         Shape::Polyhedron(p) => linear::classify_polyhedron(point, p, opts),
+        Shape::Quadric(q) => {
+            if let Position::Double(v) = point {
+                for (i, &x) in v.iter().enumerate() {
+                    crate::error::require_finite(&format!("point[{i}]"), x)?;
+                }
+            }
+            let p: [rug::Rational; 3] =
+                point
+                    .exact()
+                    .try_into()
+                    .map_err(|v: Vec<_>| GeomError::CountMismatch {
+                        field: "point".into(),
+                        expected: "3 coordinates".into(),
+                        found: v.len().to_string(),
+                    })?;
+            classify_point_quadric(&p, q).ok_or_else(|| not_closed("quadric"))
+        }
         Shape::Surface(s) => {
             let p = point.doubles::<3>("point")?;
             let c = classify_point_surface(&p, s).ok_or_else(|| not_closed(surface_name(s)))?;
@@ -57,6 +75,9 @@ fn surface_name(s: &AnySurface) -> &'static str {
         AnySurface::Bilinear(_) => "bilinear",
         AnySurface::Bezier(_) => "bezier_surface",
         AnySurface::Nurbs(_) => "nurbs_surface",
+        AnySurface::Extrusion(_) => "extrusion",
+        AnySurface::Revolution(_) => "revolution",
+        AnySurface::Ruled(_) => "ruled",
     }
 }
 

@@ -7,6 +7,7 @@ use crate::certificate::{Arithmetic, Certified};
 use crate::error::GeomError;
 use crate::ops::algebraic::curve_on_surface as on_surface;
 use crate::ops::algebraic::curve_quadric::curve_quadric;
+use crate::ops::algebraic::implicit_quadric;
 use crate::ops::algebraic::pairs;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
@@ -93,6 +94,10 @@ fn algebraic(
         (Shape::Surface(s), Shape::Curve(c)) => on_surface::curve_on_surface(c, s)
             .or_else(|| curve_quadric(c, s, true))
             .map(Ok),
+        (Shape::Linear(l), Shape::Quadric(q)) => implicit_quadric::line_quadric(l, q, true).map(Ok),
+        (Shape::Quadric(q), Shape::Linear(l)) => {
+            implicit_quadric::line_quadric(l, q, false).map(Ok)
+        }
         (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false, deadline).map(Ok),
         (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true, deadline).map(Ok),
         _ => pairs::plane_pair(a, b, deadline),

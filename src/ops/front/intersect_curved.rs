@@ -57,6 +57,14 @@ fn is_plane_shape(shape: &Shape) -> bool {
 
 /// Two shapes, at least one of them curved.
 pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Answer>, GeomError> {
+    if let Some(i) = [a, b].iter().position(|s| matches!(s, Shape::Quadric(_))) {
+        return Err(unsupported(
+            &format!("{}.type", field(i)),
+            "an implicit `quadric` is intersected with lines and segments (exactly) in this \
+             build; against curves, planes and surfaces give it by its named type (sphere, \
+             ellipsoid, cylinder, ...)",
+        ));
+    }
     if is_plane_shape(a) && is_plane_shape(b) {
         return plane_curves(a, b, opts);
     }

@@ -56,5 +56,11 @@ pub fn project(
             field: "onto.type".into(),
             reason: "a polyhedron is used as the `shell` of `classify` in this build".into(),
         }),
+        Shape::Quadric(_) => Err(GeomError::Unsupported {
+            field: "onto.type".into(),
+            reason: "projection onto an implicit `quadric` is not implemented (give the \
+                     surface by its named type, e.g. `ellipsoid`, to project onto it)"
+                .into(),
+        }),
     }
 }

@@ -30,7 +30,7 @@ pub fn image(shape: &Shape, params: &[Rational]) -> Result<Option<Region>, Strin
         Shape::Curve(c) => curve::<3, _>(c, params)?,
         Shape::Curve2(c) => curve::<2, _>(c, params)?,
         Shape::Surface(s) => surface(s, params)?,
-        Shape::Conic2(_) | Shape::Polyhedron(_) => {
+        Shape::Conic2(_) | Shape::Polyhedron(_) | Shape::Quadric(_) => {
             return Err("the object has no parameters".into());
         }
     };
@@ -134,13 +134,19 @@ fn curve<const D: usize, C: Curve<D>>(c: &C, p: &[Rational]) -> Result<Region, S
     region_of(&c.point(&Interval::from_rational(&p[0])))
 }
 
-/// Whether the surface's formula in a closed direction is an angle's (valid for every
-/// value of the parameter, the same point modulo the period): the analytic surfaces.
-fn angular(s: &AnySurface) -> bool {
-    !matches!(
-        s,
-        AnySurface::Bezier(_) | AnySurface::Nurbs(_) | AnySurface::Bilinear(_)
-    )
+/// Whether the surface's formula in the closed direction `k` is an angle's (valid for
+/// every value of the parameter, the same point modulo the period): the analytic
+/// surfaces, the rotation angle of a revolution, and a motion surface's profile
+/// direction when the profile is periodic (a circle).
+fn angular(s: &AnySurface, k: usize) -> bool {
+    match s {
+        AnySurface::Bezier(_) | AnySurface::Nurbs(_) | AnySurface::Bilinear(_) => false,
+        AnySurface::Revolution(r) => k == 0 || r.profile().is_periodic(),
+        AnySurface::Extrusion(e) => k == 0 && e.profile().is_periodic(),
+        // Guides reparametrised to [0, 1]: a parameter past 1 is not a turn of the circle.
+        AnySurface::Ruled(_) => false,
+        _ => true,
+    }
 }
 
 fn surface(s: &AnySurface, p: &[Rational]) -> Result<Region, String> {
@@ -149,7 +155,7 @@ fn surface(s: &AnySurface, p: &[Rational]) -> Result<Region, String> {
     let closed = s.is_closed();
     let rounded = s.domain_rounded();
     for (k, (name, [lo, hi])) in [("u", u), ("v", v)].into_iter().enumerate() {
-        let periodic = closed[k] && angular(s);
+        let periodic = closed[k] && angular(s, k);
         if !periodic && !within(&p[k], lo, hi, rounded[k]) {
             return Err(outside(name, lo, hi));
         }
