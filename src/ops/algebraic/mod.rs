@@ -20,6 +20,7 @@ mod bezier_line2;
 mod bezier_plane;
 mod bivariate;
 mod conic;
+mod conic_arcs;
 mod conic_conic;
 mod conic_plane;
 pub(crate) mod curve_on_surface;

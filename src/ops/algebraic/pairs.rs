@@ -471,8 +471,9 @@ pub(crate) fn plane_pair(
     )
 }
 
-/// A 2D line or segment ([`super::bezier_line2`]) or a whole conic
-/// ([`super::bezier_conic2`]) against a Bézier or NURBS curve, in either order; `None`
+/// A 2D line or segment ([`super::bezier_line2`]), a whole conic
+/// ([`super::bezier_conic2`]) or a spline of conic arcs ([`super::conic_arcs`]) against
+/// a Bézier or NURBS curve, in either order; `None`
 /// for other pairs or when not decided exactly (or not before `deadline`).
 fn spline_pair(
     a: &Shape,
@@ -492,6 +493,11 @@ fn spline_pair(
         Some(c) => (c, b, true),
         None => (as_curve(b)?, a, false),
     };
+    if let Some(arcs) = as_curve(other) {
+        return super::conic_arcs::spline_conic_arcs(&curve, &arcs, curve_first, deadline).or_else(
+            || super::conic_arcs::spline_conic_arcs(&arcs, &curve, !curve_first, deadline),
+        );
+    }
     if let Some(line) = line2(other) {
         return super::bezier_line2::spline_line2(
             &curve,
