@@ -5,6 +5,8 @@
 //! run one with `cargo test --release --features cgal --test curves <file>::`.
 //! `suites.rs` checks that every file of tests/ is in exactly one suite.
 
+#[path = "../conic_arcs_exact.rs"]
+mod conic_arcs_exact;
 #[path = "../curve_derivatives.rs"]
 mod curve_derivatives;
 #[path = "../curve_enclosure.rs"]
