@@ -40,6 +40,13 @@ fn examples() -> Vec<Value> {
                "points": [[[0, 0, 0], [1, 0, 1], [2, 0, 0], [3, 0, 1]],
                           [[0, 1, 0], [1, 1, 2], [2, 1, 0], [3, 1, 1]]],
                "weights": [[1, 0.5, 1, 1], [1, 2, 1, 0.25]]}),
+        json!({"type": "revolution", "profile": {"type": "segment", "a": [1.25, 0, 0],
+               "b": [0.5, 0, 2]}, "origin": [0, 0, 0], "axis": [0, 0, 1]}),
+        json!({"type": "extrusion", "profile": {"type": "circle", "center": [0, 0, 0],
+               "radius": 1.25, "axis": [0, 0, 1]}, "dir": [0, 1, 2]}),
+        json!({"type": "ruled",
+               "a": {"type": "circle", "center": [0, 0, 0], "radius": 1.5, "axis": [0, 0, 1]},
+               "b": {"type": "bezier", "points": [[0, 0, 2], [1, 1, 2], [2, 0, 3]]}}),
     ]
 }
 

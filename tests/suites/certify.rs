@@ -1,9 +1,11 @@
-//! Test suite `certify`: The certifier and the promise: univariate and system certification, Jacobians, verify, correct rounding, seams and poles, extreme offsets, numeric projection truths, the exact algebraic solver.
+//! Test suite `certify`: The certifier and the promise: univariate and system
+//! certification, Jacobians, verify, correct rounding, seams and poles, extreme offsets,
+//! numeric projection truths, the exact algebraic solver.
 //!
 //! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
 //! binary per file cost most of CI's build time. Each file stays a module of its own;
 //! run one with `cargo test --release --features cgal --test certify <file>::`.
-//! `suites.rs` checks that every file of tests/ is in exactly one suite.
+//! `tests/suites_registry.rs` checks that every file of tests/ is in exactly one suite.
 
 #[path = "../certify_properties.rs"]
 mod certify_properties;

@@ -1,9 +1,11 @@
-//! Test suite `cli`: The command line and the front door: case reading, solve/verify/run, golden answers, the supported-pairs table, README examples, the result schema, fuzz corpus, time limits, robustness plots, and the module layering.
+//! Test suite `cli`: The command line and the front door: case reading, solve/verify/run,
+//! golden answers, the supported-pairs table, README examples, the result schema, fuzz
+//! corpus, time limits, robustness plots, and the module layering.
 //!
 //! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
 //! binary per file cost most of CI's build time. Each file stays a module of its own;
 //! run one with `cargo test --release --features cgal --test cli <file>::`.
-//! `suites.rs` checks that every file of tests/ is in exactly one suite.
+//! `tests/suites_registry.rs` checks that every file of tests/ is in exactly one suite.
 
 #[path = "../budgets.rs"]
 mod budgets;

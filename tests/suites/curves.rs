@@ -1,9 +1,11 @@
-//! Test suite `curves`: Curves: derivatives, enclosures, facts and errors, curve ∩ line/plane/curve, projections onto curves, exact conic and spline routes, near-tangencies, nearest ties, walking a curve.
+//! Test suite `curves`: Curves: derivatives, enclosures, facts and errors, curve ∩
+//! line/plane/curve, projections onto curves, exact conic and spline routes, near-
+//! tangencies, nearest ties, walking a curve.
 //!
 //! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
 //! binary per file cost most of CI's build time. Each file stays a module of its own;
 //! run one with `cargo test --release --features cgal --test curves <file>::`.
-//! `suites.rs` checks that every file of tests/ is in exactly one suite.
+//! `tests/suites_registry.rs` checks that every file of tests/ is in exactly one suite.
 
 #[path = "../conic_arcs_exact.rs"]
 mod conic_arcs_exact;

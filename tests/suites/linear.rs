@@ -1,9 +1,11 @@
-//! Test suite `linear`: The exact linear kernel, intervals and the CGAL oracle: worked examples, properties, the integer tier, overflow, ITF1788, and the differential tests against CGAL.
+//! Test suite `linear`: The exact linear kernel, intervals and the CGAL oracle: worked
+//! examples, properties, the integer tier, overflow, ITF1788, and the differential tests
+//! against CGAL.
 //!
 //! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
 //! binary per file cost most of CI's build time. Each file stays a module of its own;
 //! run one with `cargo test --release --features cgal --test linear <file>::`.
-//! `suites.rs` checks that every file of tests/ is in exactly one suite.
+//! `tests/suites_registry.rs` checks that every file of tests/ is in exactly one suite.
 
 #[path = "../cgal_gated.rs"]
 mod cgal_gated;

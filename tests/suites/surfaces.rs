@@ -1,9 +1,10 @@
-//! Test suite `surfaces`: Surfaces: derivatives, enclosures, facts and errors, curve ∩ surface, surface ∩ surface, three surfaces, sections, contours, views, visibility, fillets, classification, projections onto surfaces.
+//! Test suite `surfaces`: Surfaces: derivatives, enclosures, facts and errors, motion
+//! surfaces, curve ∩ surface, classification, projections onto surfaces, walking a surface.
 //!
 //! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
 //! binary per file cost most of CI's build time. Each file stays a module of its own;
 //! run one with `cargo test --release --features cgal --test surfaces <file>::`.
-//! `suites.rs` checks that every file of tests/ is in exactly one suite.
+//! `tests/suites_registry.rs` checks that every file of tests/ is in exactly one suite.
 
 #[path = "../circle_near_surface.rs"]
 mod circle_near_surface;
@@ -11,32 +12,16 @@ mod circle_near_surface;
 mod classify_closed_surface;
 #[path = "../classify_polyhedron.rs"]
 mod classify_polyhedron;
-#[path = "../contour.rs"]
-mod contour;
 #[path = "../curve_on_surface_exact.rs"]
 mod curve_on_surface_exact;
-#[path = "../fillet.rs"]
-mod fillet;
 #[path = "../intersect_curve_surface.rs"]
 mod intersect_curve_surface;
-#[path = "../intersect_sphere_sphere_exact.rs"]
-mod intersect_sphere_sphere_exact;
-#[path = "../intersect_surface_surface_certified.rs"]
-mod intersect_surface_surface_certified;
-#[path = "../intersect_surface_surface_float.rs"]
-mod intersect_surface_surface_float;
-#[path = "../intersect_three_surfaces.rs"]
-mod intersect_three_surfaces;
 #[path = "../motion_surfaces.rs"]
 mod motion_surfaces;
 #[path = "../project_surface.rs"]
 mod project_surface;
 #[path = "../rational_patches.rs"]
 mod rational_patches;
-#[path = "../section.rs"]
-mod section;
-#[path = "../ssi_families.rs"]
-mod ssi_families;
 #[path = "../surface_derivatives.rs"]
 mod surface_derivatives;
 #[path = "../surface_enclosure.rs"]
@@ -47,9 +32,5 @@ mod surface_errors;
 mod surface_facts;
 #[path = "../surface_json.rs"]
 mod surface_json;
-#[path = "../views.rs"]
-mod views;
-#[path = "../visibility.rs"]
-mod visibility;
 #[path = "../walk_surface.rs"]
 mod walk_surface;
