@@ -7,6 +7,11 @@
 //! run one with `cargo test --release --features cgal --test certify <file>::`.
 //! `tests/suites_registry.rs` checks that every file of tests/ is in exactly one suite.
 
+// Support modules (tests/*_support/) are included by each file that uses them, so that
+// every file stays a self-contained module; in a suite they are therefore loaded more
+// than once, which clippy flags.
+#![allow(clippy::duplicate_mod)]
+
 #[path = "../certify_properties.rs"]
 mod certify_properties;
 #[path = "../certify_systems.rs"]

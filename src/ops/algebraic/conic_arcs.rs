@@ -218,7 +218,10 @@ pub(super) fn spline_conic_arcs(
                     return false;
                 }
                 let at_end = s[0] == Ordering::Equal && s[1] == Ordering::Equal;
-                if at_end && !(last && !arcs_of.closed) {
+                // The arc's end `u = 1` belongs to the next piece (the first one on a
+                // closed curve); only the last arc of an open curve keeps it.
+                let end_is_next = !last || arcs_of.closed;
+                if at_end && end_is_next {
                     return false;
                 }
                 let at_start = s[1] == Ordering::Equal && s[2] == Ordering::Equal;
