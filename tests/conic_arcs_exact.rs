@@ -24,7 +24,7 @@ mod truth_support;
 
 use geocert::io::CaseResult;
 use rug::Float;
-use truth_support::{cases, fl, holds, num, solve};
+use truth_support::{bezier2_at, cases, fl, holds, num, solve};
 
 fn pts(ps: &[[f64; 2]]) -> String {
     let v: Vec<String> = ps
@@ -172,24 +172,6 @@ fn osculating_parabolas_touch_the_nurbs_circle_at_a_knot_once() {
     }
 }
 
-/// The rational cubic's point at `t`, by de Casteljau on homogeneous points in MPFR.
-fn cubic_at(ctrl: &[[f64; 2]], w: &[f64], t: &Float) -> [Float; 2] {
-    let mut h: Vec<[Float; 3]> = ctrl
-        .iter()
-        .zip(w)
-        .map(|(p, &wi)| [fl(p[0]) * wi, fl(p[1]) * wi, fl(wi)])
-        .collect();
-    let u = fl(1) - t;
-    while h.len() > 1 {
-        h = h
-            .windows(2)
-            .map(|ab| std::array::from_fn(|k| ab[0][k].clone() * &u + ab[1][k].clone() * t))
-            .collect();
-    }
-    let [x, y, wt] = h.remove(0);
-    [x / &wt, y / wt]
-}
-
 /// Random rational cubics against random circles given both ways, in both orders: the
 /// same answer to the bit, and every knot parameter holding its truth (the point
 /// computed in MPFR at the root that the circle2 answer's parameter box isolates,
@@ -211,7 +193,7 @@ fn random_rational_cubics_meet_the_nurbs_circle_as_they_meet_the_circle() {
         let with_circle = solve(&case(&bez, &circle2(c, r)));
         let with_arcs = solve(&case(&bez, &nurbs_circle(c, r)));
         let f = |t: &Float| {
-            let x = cubic_at(&ctrl, &w, t);
+            let x = bezier2_at(&ctrl, &w, t);
             let (dx, dy) = (x[0].clone() - c[0], x[1].clone() - c[1]);
             dx.clone() * &dx + dy.clone() * &dy - fl(r) * r
         };
@@ -233,7 +215,7 @@ fn random_rational_cubics_meet_the_nurbs_circle_as_they_meet_the_circle() {
                     hi = mid;
                 }
             }
-            Some(cubic_at(&ctrl, &w, &lo))
+            Some(bezier2_at(&ctrl, &w, &lo))
         };
         agree(&what, &with_circle, &with_arcs, true, c, r, truth);
         if i % 4 == 0 {

@@ -295,24 +295,12 @@ fn a_rounded_nurbs_circle_touches_its_circle_at_the_four_knots() {
     }
 }
 
-/// The circle's equation at the rational Bézier's point, by de Casteljau on the homogeneous control points in MPFR (not the power basis the
-/// library builds its polynomial in).
+/// The circle's equation at the rational Bézier's point (de Casteljau in MPFR,
+/// [`truth_support::bezier2_at`]).
 fn circle_at(ctrl: &[[f64; 2]], w: &[f64], c: [f64; 2], r: f64, t: &Float) -> Float {
-    let mut h: Vec<[Float; 3]> = ctrl
-        .iter()
-        .zip(w)
-        .map(|(p, &wi)| [fl(p[0]) * wi, fl(p[1]) * wi, fl(wi)])
-        .collect();
-    let u = fl(1) - t;
-    while h.len() > 1 {
-        h = h
-            .windows(2)
-            .map(|ab| std::array::from_fn(|k| ab[0][k].clone() * &u + ab[1][k].clone() * t))
-            .collect();
-    }
-    let [x, y, wt] = h.remove(0);
-    let dx = x / &wt - c[0];
-    let dy = y / &wt - c[1];
+    let [x, y] = truth_support::bezier2_at(ctrl, w, t);
+    let dx = x - c[0];
+    let dy = y - c[1];
     dx.clone() * &dx + dy.clone() * &dy - fl(r) * r
 }
 

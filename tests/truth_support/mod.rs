@@ -276,3 +276,24 @@ pub fn runs(defect: Option<&str>) -> bool {
     !defect.is_some_and(|d| KNOWN_DEFECTS.contains(&d))
         || std::env::var_os("GEOCERT_KNOWN_DEFECTS").is_some()
 }
+
+/// The point at `t` of the rational Bézier curve of plane control points `ctrl` and
+/// weights `w`, by de Casteljau on the homogeneous points in MPFR (not the power basis
+/// the library builds its polynomials in).
+#[allow(dead_code)]
+pub fn bezier2_at(ctrl: &[[f64; 2]], w: &[f64], t: &Float) -> [Float; 2] {
+    let mut h: Vec<[Float; 3]> = ctrl
+        .iter()
+        .zip(w)
+        .map(|(p, &wi)| [fl(p[0]) * wi, fl(p[1]) * wi, fl(wi)])
+        .collect();
+    let u = fl(1) - t;
+    while h.len() > 1 {
+        h = h
+            .windows(2)
+            .map(|ab| std::array::from_fn(|k| ab[0][k].clone() * &u + ab[1][k].clone() * t))
+            .collect();
+    }
+    let [x, y, wt] = h.remove(0);
+    [x / &wt, y / wt]
+}
