@@ -163,3 +163,70 @@ fn worked_example_16_14_cylinder() {
         "{us:?}"
     );
 }
+
+/// The `visibility` case of the command line (docs/FORMAT.md): the same family as
+/// [`a_second_sphere_occludes_exactly_where_the_ray_meets_it`], asked through
+/// `geocert::io`: kind `visible` / `hidden` by the 300-bit truth, the point's box holding
+/// the exact net point, `blocker` 1 exactly when hidden; a missing `params` or `view`
+/// is an error naming it.
+#[test]
+fn the_visibility_case_answers_by_the_closed_form() {
+    use geocert::io::{read_cases, solve_case};
+    let mut rng = Rng::new(55);
+    let (mut hidden, mut visible) = (0, 0);
+    for case in 0..30 {
+        let (u, v) = (
+            std::f64::consts::TAU * u01(&mut rng),
+            0.25 + 1.2 * u01(&mut rng),
+        );
+        let cb = [0.8 * rng.unit(), 0.8 * rng.unit(), 3.0 + u01(&mut rng)];
+        let rb = 0.2 + 0.5 * u01(&mut rng);
+        let (p, _) = net([0.0; 3], 1.0, u, v);
+        let w: [Float; 3] = std::array::from_fn(|i| p[i].clone() - cb[i]);
+        let bq = dot(&w, &[0.0, 0.0, 1.0]);
+        let cq = (0..3).fold(mp(0.0), |s, i| s + w[i].clone() * &w[i]) - mp(rb) * mp(rb);
+        let disc = bq.clone() * &bq - &cq;
+        if disc.clone().abs() < 1e-6 {
+            continue;
+        }
+        let meets = disc > 0 && (-bq + disc.sqrt()) > 0;
+        let text = format!(
+            r#"{{"id": {case}, "op": "visibility", "params": [{u}, {v}], "view": {{"type": "parallel", "direction": [0, 0, 1]}}, "objects": [{{"type": "sphere", "center": [0, 0, 0], "radius": 1}}, {{"type": "sphere", "center": {cb:?}, "radius": {rb}}}]}}"#
+        );
+        let r = solve_case(read_cases(&text).remove(0));
+        let json = serde_json::to_value(&r).unwrap();
+        assert_eq!(r.status, "verified", "case {case}: {json}");
+        let want = if meets { "hidden" } else { "visible" };
+        assert_eq!(r.kind, Some(want), "case {case}: {json}");
+        assert_eq!(json["blocker"].as_u64(), meets.then_some(1), "case {case}");
+        let pt = &json["points"][0];
+        for k in 0..3 {
+            let b = &pt["box"][k];
+            let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+            assert!(
+                p[k] >= lo && p[k] <= hi,
+                "case {case}: coordinate {k} outside its box"
+            );
+        }
+        assert_eq!(pt["params"][0][0].as_f64(), Some(u));
+        if meets {
+            hidden += 1;
+        } else {
+            visible += 1;
+        }
+    }
+    assert!(
+        hidden >= 3 && visible >= 3,
+        "{hidden} hidden, {visible} visible"
+    );
+    for (drop, field) in [
+        ("\"params\": [1, 0.5], ", "params"),
+        ("\"view\": \"horizontal\", ", "view"),
+    ] {
+        let text = r#"{"op": "visibility", "params": [1, 0.5], "view": "horizontal", "objects": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]}"#
+            .replace(drop, "");
+        let r = solve_case(read_cases(&text).remove(0));
+        let json = serde_json::to_value(&r).unwrap();
+        assert_eq!(json["error"]["field"].as_str(), Some(field), "{json}");
+    }
+}

@@ -155,6 +155,10 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
             })
         }
         Answer::Side(_, nearest) => r.points = nearest.as_ref().map(|p| vec![point(p)]),
+        Answer::Visibility(v) => {
+            r.points = Some(vec![point(&v.point)]);
+            r.blocker = v.blocker;
+        }
         Answer::Curves(c) => {
             let singular: Vec<SingularPointOut> =
                 c.singular_points.iter().map(singular_point).collect();

@@ -22,6 +22,7 @@ pub enum Op {
     Fillet,
     Chamfer,
     Silhouette,
+    Visibility,
     Walk,
 }
 
@@ -36,6 +37,7 @@ impl Op {
             Op::Fillet => "fillet",
             Op::Chamfer => "chamfer",
             Op::Silhouette => "silhouette",
+            Op::Visibility => "visibility",
             Op::Walk => "walk",
         }
     }
@@ -76,8 +78,11 @@ pub struct Case {
     pub nearest: bool,
     pub shell: Option<ObjectSpec>,
     pub claim: Option<serde_json::Value>,
-    /// `silhouette`: the view (docs/FORMAT.md "Views"), read by [`super::view::view`].
+    /// `silhouette`, `visibility`: the view (docs/FORMAT.md "Views"), read by
+    /// [`super::view::view`].
     pub view: Option<serde_json::Value>,
+    /// `visibility`: the parameters `[u, v]` of the point on `objects[0]`.
+    pub params: Option<[Double; 2]>,
     /// `fillet`, `chamfer`: what the blend asks besides its two objects.
     pub blend: BlendFields,
     pub options: Options,
@@ -125,8 +130,10 @@ struct RawCase {
     pub shell: Option<serde_json::Value>,
     /// The answer of another program, for `geocert verify`.
     pub claim: Option<serde_json::Value>,
-    /// `silhouette`: the view (a name or an object).
+    /// `silhouette`, `visibility`: the view (a name or an object).
     pub view: Option<serde_json::Value>,
+    /// `visibility`: the parameters `[u, v]` of the point on `objects[0]`.
+    pub params: Option<[Double; 2]>,
     /// `fillet`: the ball radius ρ.
     pub radius: Option<Double>,
     /// `chamfer`: the legs on the first and the second object.
@@ -209,6 +216,7 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
             shell,
             claim: raw.claim,
             view: raw.view,
+            params: raw.params,
             blend: BlendFields {
                 radius: raw.radius,
                 legs: raw.legs,

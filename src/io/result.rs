@@ -236,6 +236,10 @@ pub struct CaseResult {
     /// Kind `surface` (`fillet`, `chamfer`): the blend (docs/FORMAT.md "Blends").
     #[serde(skip_serializing_if = "Option::is_none")]
     pub blend: Option<BlendOut>,
+    /// `visibility`, kind `hidden`: the index in `objects` of the surface proven to hide
+    /// the point (0: the surface itself).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub blocker: Option<usize>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error: Option<ErrorOut>,
     /// `verify`: the verdict on each claimed item.
@@ -283,6 +287,7 @@ impl CaseResult {
             singular_points: None,
             conic: None,
             blend: None,
+            blocker: None,
             claims: None,
             missed: None,
             error: Some(ErrorOut {
@@ -313,6 +318,7 @@ impl CaseResult {
             singular_points: None,
             conic: None,
             blend: None,
+            blocker: None,
             error: None,
             claims: None,
             missed: None,

@@ -148,6 +148,22 @@ pub fn answer(case: &Case) -> Result<Certified<Answer>, GeomError> {
                 &options(case)?,
             )
         }
+        Op::Visibility => {
+            let shapes = case
+                .objects
+                .iter()
+                .enumerate()
+                .map(|(i, s)| shape(s, &format!("objects[{i}]")))
+                .collect::<Result<Vec<_>, _>>()?;
+            let params = case.params.ok_or_else(|| missing("params", case.op))?;
+            let view = case.view.as_ref().ok_or_else(|| missing("view", case.op))?;
+            ops::view::visibility_answer(
+                &shapes,
+                params.map(|d| d.0),
+                &super::view::view(view)?,
+                &options(case)?,
+            )
+        }
         other => Err(GeomError::Unsupported {
             field: "op".into(),
             reason: format!("`{}` is not implemented in this build", other.as_str()),

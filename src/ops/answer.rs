@@ -203,6 +203,35 @@ pub struct BlendAnswer {
     pub components: Vec<BlendComponent>,
 }
 
+/// The visibility of a surface point in a view (OPERATIONS.md (13.11), with occlusion:
+/// [`crate::ops::view::visibility`]).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Visibility {
+    Visible,
+    Hidden,
+    OnContour,
+}
+
+impl Visibility {
+    /// The name the case format uses.
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Visibility::Visible => "visible",
+            Visibility::Hidden => "hidden",
+            Visibility::OnContour => "on_contour",
+        }
+    }
+}
+
+/// The answer of `visibility`: the verdict, the surface point, and which input surface
+/// hides it (its index among the case's objects) when it is hidden.
+#[derive(Debug, Clone, PartialEq)]
+pub struct VisibilityPoint {
+    pub visibility: Visibility,
+    pub point: Point,
+    pub blocker: Option<usize>,
+}
+
 /// The answer of an operation.
 #[derive(Debug, Clone, PartialEq)]
 // One answer per operation call: its size does not matter, boxing would only add noise.
@@ -228,6 +257,8 @@ pub enum Answer {
     Curves(CurvesAnswer),
     /// A fillet or chamfer surface (kind `surface`).
     Blend(BlendAnswer),
+    /// `visibility`: a surface point `visible`, `hidden` or `on_contour`.
+    Visibility(VisibilityPoint),
 }
 
 impl Answer {
@@ -246,6 +277,7 @@ impl Answer {
             Answer::Curves(_) => "curves",
             Answer::Blend(b) if b.components.is_empty() => "empty",
             Answer::Blend(_) => "surface",
+            Answer::Visibility(v) => v.visibility.as_str(),
         }
     }
 
@@ -255,6 +287,7 @@ impl Answer {
             Answer::Points(p) => p,
             Answer::Side(_, Some(p)) => std::slice::from_ref(p),
             Answer::Curves(c) => &c.points,
+            Answer::Visibility(v) => std::slice::from_ref(&v.point),
             _ => &[],
         }
     }

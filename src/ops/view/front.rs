@@ -7,9 +7,13 @@ use super::projection::View;
 use super::visibility::{visibility_point_surface, VisibilityAnswer};
 use crate::certificate::Certified;
 use crate::error::GeomError;
-use crate::ops::answer::{Answer, CurveAnswer, CurveEnd, CurveVertex, CurvesAnswer};
+use crate::num::Interval;
+use crate::ops::answer::{
+    Answer, CurveAnswer, CurveEnd, CurveVertex, CurvesAnswer, Point, VisibilityPoint,
+};
 use crate::ops::{Options, Shape};
 use crate::surface::AnySurface;
+use crate::surface::Surface;
 
 fn surface<'s>(s: &'s Shape, field: &str) -> Result<&'s AnySurface, GeomError> {
     match s {
@@ -70,6 +74,52 @@ pub fn visibility(
         .collect::<Result<Vec<_>, _>>()?;
     let opts = options.started();
     visibility_point_surface(s, params, view, &rest, &opts.certify())
+}
+
+/// `visibility` at the front door: [`visibility`] of `s(params)` on `shapes[0]`, occluded
+/// by `shapes[1..]`, as an [`Answer::Visibility`] whose point carries `s(params)` with a
+/// certified box (the surface evaluated in f64 interval arithmetic at the exact doubles
+/// `params`, which encloses the true point), the parameters on `shapes[0]` (empty lists
+/// for the others), and the index among `shapes` of the surface that hides it.
+///
+/// Errors: no shape (field `objects`); those of [`visibility`].
+pub fn visibility_answer(
+    shapes: &[Shape],
+    params: [f64; 2],
+    view: &View,
+    options: &Options,
+) -> Result<Certified<Answer>, GeomError> {
+    let (first, others) = shapes
+        .split_first()
+        .ok_or_else(|| GeomError::CountMismatch {
+            field: "objects".into(),
+            expected: "the surface, then any surfaces that may hide it".into(),
+            found: "0".into(),
+        })?;
+    let c = visibility(first, params, view, others, options)?;
+    let s = surface(first, "objects[0]")?;
+    let [u, v] = params.map(Interval::point);
+    let b = s.jet(&u, &v, 0).swap_remove(0);
+    let mut params_out = vec![Vec::new(); shapes.len()];
+    params_out[0] = params.to_vec();
+    let mut param_box = vec![Vec::new(); shapes.len()];
+    param_box[0] = params.iter().map(|&x| [x, x]).collect();
+    let point = Point {
+        xyz: c.value.xyz.to_vec(),
+        xyz_box: b.iter().map(|i| [i.lo(), i.hi()]).collect(),
+        params: params_out,
+        param_box: Some(param_box),
+        multiplicity: 1,
+        ..Point::default()
+    };
+    let blocker = c.value.blocker.as_ref().map(|(k, _)| *k);
+    Ok(map_certified(c, |v| {
+        Answer::Visibility(VisibilityPoint {
+            visibility: v.visibility,
+            point,
+            blocker,
+        })
+    }))
 }
 
 fn map_certified<T, U>(c: Certified<T>, f: impl FnOnce(T) -> U) -> Certified<U> {

@@ -33,7 +33,7 @@ mod visibility;
 pub use contour::{
     contour_surface, Contour, ContourBound, ContourCurve, ContourEnd, ContourOptions, ContourVertex,
 };
-pub use front::{contour, curves_answer, visibility};
+pub use front::{contour, curves_answer, visibility, visibility_answer};
 pub use projection::{picture_axes, Rays, View};
 pub use system::ContourFn;
 pub use visibility::{visibility_point_surface, Visibility, VisibilityAnswer};

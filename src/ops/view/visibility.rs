@@ -31,24 +31,7 @@ use crate::ops::surface_surface::SurfaceOperand;
 use crate::surface::whole_box::surface_box;
 use crate::surface::Surface;
 
-/// The verdict.
-#[derive(Debug, Clone, Copy, PartialEq, Eq)]
-pub enum Visibility {
-    Visible,
-    Hidden,
-    OnContour,
-}
-
-impl Visibility {
-    /// The name the case format uses.
-    pub fn as_str(self) -> &'static str {
-        match self {
-            Visibility::Visible => "visible",
-            Visibility::Hidden => "hidden",
-            Visibility::OnContour => "on_contour",
-        }
-    }
-}
+pub use crate::ops::answer::Visibility;
 
 /// The answer of [`visibility_point_surface`].
 #[derive(Debug, Clone, PartialEq)]
