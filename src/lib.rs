@@ -28,6 +28,7 @@ pub mod ops;
 #[cfg(feature = "cgal")]
 pub mod oracle;
 pub mod prelude;
+pub mod render;
 pub mod robust;
 pub mod surface;
 pub mod walk;

@@ -1,5 +1,4 @@
-//! The `geocert` command line: `solve`, `verify`, `demo`, `bench` (and, as later
-//! issues land, `render`).
+//! The `geocert` command line: `solve`, `verify`, `demo`, `bench`, `render`.
 
 mod cli;
 
@@ -80,6 +79,10 @@ enum Command {
         #[command(subcommand)]
         which: cli::robustness::Bench,
     },
+    /// Draw each case of FILE and its certified answer as a picture (SVG, and PNG with
+    /// `--png`) in a view of OPERATIONS.md §13.6: surfaces as iso-parameter nets with
+    /// their contours, hidden parts dashed, the answer's curves and points highlighted.
+    Render(cli::render::RenderArgs),
 }
 
 fn run(mode: Mode, args: RunArgs, progress: bool) -> ExitCode {
@@ -108,5 +111,6 @@ fn main() -> ExitCode {
         Command::Bench { which } => {
             cli::robustness::run(which, cli::progress::wanted(cli.progress))
         }
+        Command::Render(args) => cli::render::run(args),
     }
 }

@@ -23,7 +23,8 @@ use std::path::{Path, PathBuf};
 
 /// The layers, lowest first: a module may import only from layers below its own.
 /// `oracle` (the CGAL bridge, which needs only `error`) sits beside `ops`; `robust`
-/// (the robustness generators and table, which run geom and the oracle) beside `io`.
+/// (the robustness generators and table, which run geom and the oracle) and `render` (the
+/// pictures, which draw ops' shapes and answers) beside `io`.
 const LAYERS: &[&[&str]] = &[
     &["certificate", "error"],
     &["num"],
@@ -33,7 +34,7 @@ const LAYERS: &[&[&str]] = &[
     &["walk"],
     &["certify"],
     &["ops", "oracle"],
-    &["io", "robust", "prelude"],
+    &["io", "robust", "prelude", "render"],
 ];
 
 /// Imports to a higher or the same layer, `(from module, to module)`, allowed while

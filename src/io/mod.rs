@@ -8,6 +8,7 @@ mod de;
 pub mod lenient;
 pub mod number;
 pub mod objects;
+pub mod picture;
 pub mod result;
 pub mod section_out;
 pub mod shapes;

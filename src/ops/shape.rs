@@ -217,6 +217,15 @@ impl Linear {
         })
     }
 
+    /// The object with every number rounded to the nearest double (for pictures: never
+    /// for a computation whose answer is certified).
+    pub fn rounded(&self) -> LinearObject<f64> {
+        match self {
+            Linear::Double(o) => o.clone(),
+            Linear::Exact(o) => convert(o, Rational::to_f64),
+        }
+    }
+
     /// The object on doubles; an exact object is refused (`unsupported`, naming the
     /// object: curved operations take doubles).
     pub fn doubles(&self) -> Result<LinearObject<f64>, GeomError> {

@@ -36,6 +36,8 @@ mod layers;
 mod never_hang;
 #[path = "../readme_examples.rs"]
 mod readme_examples;
+#[path = "../render.rs"]
+mod render;
 #[path = "../result_schema.rs"]
 mod result_schema;
 #[path = "../robustness_curved.rs"]
