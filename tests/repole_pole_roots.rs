@@ -71,7 +71,10 @@ fn check<S: SphereMapped>(surface: S, z0: f64, label: &str) {
     .unwrap();
     assert!(r.complete, "{label}: {:?}", r.reason);
     assert!(!r.value.is_empty());
-    assert!(r.value.iter().all(|p| p.root.status == Status::Verified), "{label}");
+    assert!(
+        r.value.iter().all(|p| p.root.status == Status::Verified),
+        "{label}"
+    );
     let at_pole: Vec<_> = r
         .value
         .iter()
@@ -80,7 +83,11 @@ fn check<S: SphereMapped>(surface: S, z0: f64, label: &str) {
     assert_eq!(at_pole.len(), 1, "{label}: the pole root");
     let p = at_pole[0];
     for (c, want) in [0.0, 0.0, z0].into_iter().enumerate() {
-        assert!(p.point_box[c].contains_value(want), "{label}: {:?}", p.point_box);
+        assert!(
+            p.point_box[c].contains_value(want),
+            "{label}: {:?}",
+            p.point_box
+        );
     }
     // The way back: the original v of the pole root's box contains π/2.
     let e = &p.root.enclosure;
@@ -93,7 +100,11 @@ fn check<S: SphereMapped>(surface: S, z0: f64, label: &str) {
 
 #[test]
 fn helix_through_a_sphere_pole() {
-    check(Sphere::new([0.0; 3], 1.0, None, None).unwrap(), 1.0, "sphere");
+    check(
+        Sphere::new([0.0; 3], 1.0, None, None).unwrap(),
+        1.0,
+        "sphere",
+    );
 }
 
 #[test]

@@ -34,7 +34,7 @@
 //!
 //! is smooth up to the poles (`λ = π/2` is `P₁`, `λ = −π/2` is `P₂`, and `X_α = 0`
 //! there), like the library's sphere `(cos v cos u, cos v sin u, sin v)`. With
-//! `cos μ = √(1 − sin²Ψ sin²λ) ≥ cos Ψ > 0`: `cos β = cos Ψ cos μ + sin Ψ sin μ`,
+//! `cos μ = √(1 − sin²Ψ sin²λ) = √(cos²Ψ + sin²Ψ cos²λ) ≥ cos Ψ > 0`: `cos β = cos Ψ cos μ + sin Ψ sin μ`,
 //! `sin β = sin Ψ cos μ − cos Ψ sin μ`, `β' = −sin Ψ cos λ / cos μ`,
 //! `β'' = sin Ψ cos²Ψ sin λ / cos³μ`; and `n' = −β' m`, `m' = β' n`.
 //!
@@ -254,7 +254,7 @@ impl PencilNet {
     pub fn beta_at<T: Real>(&self, lambda: &T) -> T {
         let f = self.frame(lambda);
         let q = f.sin_psi.clone() * lambda.sin();
-        let cm = (lambda.one_like() - q.sqr()).sqrt();
+        let cm = (f.cos_psi.sqr() + (f.sin_psi.clone() * lambda.cos()).sqr()).sqrt();
         f.psi() - q.atan2(&cm)
     }
 
@@ -264,9 +264,7 @@ impl PencilNet {
         if self.kind == NetKind::Antipodal {
             return None;
         }
-        let f = self.frame(beta);
-        let d = (f.psi() - beta).sin() / &f.sin_psi;
-        let rho = (beta.one_like() - d.sqr()).sqrt();
+        let (d, rho) = height_radius(&self.frame(beta), beta);
         Some(d.atan2(&rho))
     }
 
@@ -278,8 +276,7 @@ impl PencilNet {
             return None;
         }
         let f = self.frame(alpha);
-        let d = (f.psi() - beta).sin() / &f.sin_psi;
-        let rho = (alpha.one_like() - d.sqr()).sqrt();
+        let (d, rho) = height_radius(&f, beta);
         let (n, m) = rotating_pair(&f, &beta.cos(), &beta.sin());
         let circle = add_scaled(&scale(&alpha.cos(), &m), &alpha.sin(), &f.e1);
         Some(add_scaled(&scale(&d, &n), &rho, &circle))
@@ -294,8 +291,10 @@ impl PencilNet {
         let (cl, sl) = (lambda.cos(), lambda.sin());
         let (s, c) = (&f.sin_psi, &f.cos_psi);
         // μ = asin(sin Ψ sin λ), β = Ψ − μ.
+        // cos²μ = 1 − sin²Ψ sin²λ = cos²Ψ + sin²Ψ cos²λ: no cancellation near
+        // coinciding poles (cos Ψ → 0), where 1 − sin²μ would lose every digit.
         let sin_mu = s.clone() * &sl;
-        let cos_mu = (alpha.one_like() - sin_mu.sqr()).sqrt();
+        let cos_mu = (c.sqr() + (s.clone() * &cl).sqr()).sqrt();
         let cb = c.clone() * &cos_mu + s.clone() * &sin_mu;
         let sb = s.clone() * &cos_mu - c.clone() * &sin_mu;
         let (n, m) = rotating_pair(&f, &cb, &sb);
@@ -303,9 +302,7 @@ impl PencilNet {
         let a = [sl.clone(), cl.clone(), -sl.clone()]; // a, a_λ, a_λλ
         let b = cl.clone() * &ca;
         let e = cl.clone() * &sa;
-        let combine = |a: &T, b: &T, e: &T| {
-            add_scaled(&add_scaled(&scale(a, &n), b, &m), e, &f.e1)
-        };
+        let combine = |a: &T, b: &T, e: &T| add_scaled(&add_scaled(&scale(a, &n), b, &m), e, &f.e1);
         let mut jet = vec![combine(&a[0], &b, &e)];
         if order == 0 {
             return jet;
@@ -340,6 +337,18 @@ impl PencilNet {
         ));
         jet
     }
+}
+
+/// The distance `d = sin(Ψ − β)/sin Ψ` of the circle's plane from the centre and the
+/// radius `ρ = √(sin β sin(2Ψ − β))/sin Ψ` (`= √(1 − d²)`), both from the stored
+/// `sin Ψ`, `cos Ψ`: `β = 0` gives exactly `d = 1`, `ρ = 0` (through `√(1 − d²)` a
+/// rounding of `d` would become `ρ ≈ 1e-8`).
+fn height_radius<T: Real>(f: &PoleFrame<T>, beta: &T) -> (T, T) {
+    let (cb, sb) = (beta.cos(), beta.sin());
+    let d = (f.sin_psi.clone() * &cb - f.cos_psi.clone() * &sb) / &f.sin_psi;
+    let far = (f.psi() * beta.lift(2.0) - beta).sin();
+    let rho = (sb * far).sqrt() / &f.sin_psi;
+    (d, rho)
 }
 
 /// `n = sin β L₁ + cos β N₁`, `m = −cos β L₁ + sin β N₁` (module doc).

@@ -84,8 +84,7 @@ impl<S: SphereMapped> Repole<S> {
         if surface.domain() != (FULL_TURN, [-HALF_PI, HALF_PI]) {
             return Err(GeomError::InvalidValue {
                 field: "domain".into(),
-                reason: "new poles need the whole surface: domain [0, 2π] × [−π/2, π/2]"
-                    .into(),
+                reason: "new poles need the whole surface: domain [0, 2π] × [−π/2, π/2]".into(),
             });
         }
         let net = PencilNet::new(pole1, pole2)?;
