@@ -17,16 +17,22 @@ mod circle_near_surface;
 mod classify_closed_surface;
 #[path = "../classify_polyhedron.rs"]
 mod classify_polyhedron;
+#[path = "../composite_surface.rs"]
+mod composite_surface;
 #[path = "../curve_on_surface_exact.rs"]
 mod curve_on_surface_exact;
 #[path = "../intersect_curve_surface.rs"]
 mod intersect_curve_surface;
 #[path = "../motion_surfaces.rs"]
 mod motion_surfaces;
+#[path = "../poles_repole.rs"]
+mod poles_repole;
 #[path = "../project_surface.rs"]
 mod project_surface;
 #[path = "../rational_patches.rs"]
 mod rational_patches;
+#[path = "../repole_pole_roots.rs"]
+mod repole_pole_roots;
 #[path = "../surface_derivatives.rs"]
 mod surface_derivatives;
 #[path = "../surface_enclosure.rs"]
