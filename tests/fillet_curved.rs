@@ -32,7 +32,12 @@ fn basis(a: &[MpfrInterval; 3]) -> ([MpfrInterval; 3], [MpfrInterval; 3]) {
 
 /// The contact on a sphere (centre `cs`, radius `r`, offset radius `rp`) of the ball
 /// centred at `c`.
-fn on_sphere(cs: &[MpfrInterval; 3], r: f64, rp: &MpfrInterval, c: &[MpfrInterval; 3]) -> [MpfrInterval; 3] {
+fn on_sphere(
+    cs: &[MpfrInterval; 3],
+    r: f64,
+    rp: &MpfrInterval,
+    c: &[MpfrInterval; 3],
+) -> [MpfrInterval; 3] {
     let d = [0, 1, 2].map(|x| c[x].clone() - cs[x].clone());
     axpy(cs, &(m(r) / rp.clone()), &d)
 }
@@ -83,7 +88,12 @@ fn sphere_sphere_fillets_are_the_offset_circle() {
             empty += 1;
             continue;
         }
-        assert_eq!(got.status, Status::Verified, "case {case}: {:?}", got.reason);
+        assert_eq!(
+            got.status,
+            Status::Verified,
+            "case {case}: {:?}",
+            got.reason
+        );
         assert_eq!(b.components.len(), 1);
         let k = &b.components[0];
         assert!(k.spine.closed);
@@ -92,7 +102,11 @@ fn sphere_sphere_fillets_are_the_offset_circle() {
         let (e1, e2) = basis(&unit(&w));
         let cs = [lift3(c[0]), lift3(c[1])];
         for (i, &t) in k.grid.t.iter().enumerate() {
-            let centre = axpy(&axpy(&q, &(rc.clone() * m(t).cos()), &e1), &(rc.clone() * m(t).sin()), &e2);
+            let centre = axpy(
+                &axpy(&q, &(rc.clone() * m(t).cos()), &e1),
+                &(rc.clone() * m(t).sin()),
+                &e2,
+            );
             assert!(dist(&k.spine.points[i].xyz, &centre) <= k.spine.points[i].bound.unwrap());
             for j in 0..2 {
                 let p = on_sphere(&cs[j], r[j], &rp[j], &centre);
@@ -119,7 +133,11 @@ fn sphere_cylinder_fillets_are_graphs_over_the_angle() {
         let rho = a * rng.int(1, 6) as f64 / 8.0;
         let ap = a + signs[1] * rho;
         // off the axis by less than a'/2: the contact never passes a sphere's pole
-        let e = if rng.coin() { 0.0 } else { (rng.int(0, 8) as f64 / 16.0).min(ap / 2.0) };
+        let e = if rng.coin() {
+            0.0
+        } else {
+            (rng.int(0, 8) as f64 / 16.0).min(ap / 2.0)
+        };
         let beta = rng.unit() * 3.0;
         let cz = rng.dyadic() / 4.0;
         let cs = [o[0] + e * beta.cos(), o[1] + e * beta.sin(), cz];
@@ -152,7 +170,8 @@ fn sphere_cylinder_fillets_are_graphs_over_the_angle() {
                 let (ct, st) = (m(t).cos(), m(t).sin());
                 let bx = m(o[0]) + apm.clone() * ct.clone();
                 let by = m(o[1]) + apm.clone() * st.clone();
-                let delta2 = (bx.clone() - csm[0].clone()).sqr() + (by.clone() - csm[1].clone()).sqr();
+                let delta2 =
+                    (bx.clone() - csm[0].clone()).sqr() + (by.clone() - csm[1].clone()).sqr();
                 let z = csm[2].clone() + m(sign) * (rpm.sqr() - delta2).sqrt();
                 let centre = [bx, by, z.clone()];
                 assert!(dist(&k.spine.points[i].xyz, &centre) <= k.spine.points[i].bound.unwrap());
@@ -188,15 +207,23 @@ fn curved_pairs_refuse_what_they_cannot_prove() {
     assert_eq!(error_kind(got), ("unsupported".into(), "objects".into()));
     let far = sphere([10.0, 0.0, 0.0], 1.0);
     let got = geocert::ops::fillet(&pipe, &far, 0.25, &spec(1, None, [5, 3]), &o).unwrap();
-    assert_eq!(got.value, Answer::Blend(geocert::ops::BlendAnswer {
-        kind: geocert::ops::BlendKind::Fillet { radius: geocert::ops::fillet::Law::Constant(0.25) },
-        sector: 1,
-        components: vec![],
-    }));
+    assert_eq!(
+        got.value,
+        Answer::Blend(geocert::ops::BlendAnswer {
+            kind: geocert::ops::BlendKind::Fillet {
+                radius: geocert::ops::fillet::Law::Constant(0.25)
+            },
+            sector: 1,
+            components: vec![],
+        })
+    );
     assert!(got.complete);
     // inside a sphere of radius 1 (σ = −1): ρ ≥ 1 degenerates
     let got = geocert::ops::fillet(&s2, &far, 1.0, &spec(3, None, [5, 3]), &o);
-    assert_eq!(error_kind(got), ("degenerate_blend".into(), "radius".into()));
+    assert_eq!(
+        error_kind(got),
+        ("degenerate_blend".into(), "radius".into())
+    );
     // spheres 0.5 apart and a ball of radius 0.25 between them (sector 1): the offsets
     // touch at one point (|c₁ − c₂| = R₁' + R₂'), where the normals are opposite
     let touching = sphere([3.0, 0.0, 0.0], 1.5);

@@ -24,7 +24,10 @@ use geocert::Status;
 /// `h₀₀ = 2s³ − 3s² + 1`, `h₁₀ = s³ − 2s² + s`, `h₀₁ = −2s³ + 3s²`, `h₁₁ = s³ − s²`.
 fn law_truth(law: &Law, l: f64) -> MpfrInterval {
     let piece = |xs: Vec<f64>| {
-        let i = xs.windows(2).position(|w| l <= w[1]).unwrap_or(xs.len() - 2);
+        let i = xs
+            .windows(2)
+            .position(|w| l <= w[1])
+            .unwrap_or(xs.len() - 2);
         i.min(xs.len() - 2)
     };
     match law {
@@ -153,7 +156,7 @@ fn variable_radius_fillets_of_plane_pairs_hold_the_truth() {
         let law = random_law(&mut rng, l0, l1);
         let signs = [0, 1].map(|_| if rng.coin() { 1.0 } else { -1.0 });
         // half the cases on the whole span (the default range), half on a part of it
-        let range = (case % 2 == 1).then(|| [l0 + 0.25, l1 - 0.125]);
+        let range = (case % 2 == 1).then_some([l0 + 0.25, l1 - 0.125]);
         let (ans, status) = blend_law(
             &shapes[0],
             &shapes[1],
@@ -216,9 +219,8 @@ fn variable_radius_stations_satisfy_the_station_equations() {
     for _ in 0..40 {
         let planes = random_planes(&mut rng);
         let pair = PlanePair::new(&planes);
-        let faces = planes.map(|(n, d)| {
-            Face::of_shape(&implicit_plane(n, d), "objects[0]").unwrap()
-        });
+        let faces =
+            planes.map(|(n, d)| Face::of_shape(&implicit_plane(n, d), "objects[0]").unwrap());
         let law = random_law(&mut rng, -2.0, 2.0);
         let signs = [0, 1].map(|_| if rng.coin() { 1.0 } else { -1.0 });
         let curve = geocert::ops::fillet::CentreCurve::new(faces, signs, law.clone(), None)
@@ -284,11 +286,22 @@ fn variable_leg_chamfers_hold_the_truth() {
         let sin = (m(1.0) - c.sqr()).sqrt();
         let [mm, n] = &pair.normals;
         let tau = [
-            axpy(&[0, 1, 2].map(|x| c.clone() * mm[x].clone() / sin.clone()), &(m(-1.0) / sin.clone()), n),
-            axpy(&[0, 1, 2].map(|x| c.clone() * n[x].clone() / sin.clone()), &(m(-1.0) / sin.clone()), mm),
+            axpy(
+                &[0, 1, 2].map(|x| c.clone() * mm[x].clone() / sin.clone()),
+                &(m(-1.0) / sin.clone()),
+                n,
+            ),
+            axpy(
+                &[0, 1, 2].map(|x| c.clone() * n[x].clone() / sin.clone()),
+                &(m(-1.0) / sin.clone()),
+                mm,
+            ),
         ];
         for (i, &t) in k.grid.t.iter().enumerate() {
-            let d = [m(signs[1]) * law_truth(&legs[0], t), m(signs[0]) * law_truth(&legs[1], t)];
+            let d = [
+                m(signs[1]) * law_truth(&legs[0], t),
+                m(signs[0]) * law_truth(&legs[1], t),
+            ];
             let q = pair.q(t);
             let lines = [0, 1].map(|j| axpy(&q, &-d[j].clone(), &tau[j]));
             for j in 0..2 {
@@ -319,10 +332,17 @@ fn constant_laws_reproduce_the_16_13_example() {
         assert_eq!(c.grid.t, vec![-2.0, -1.0, 0.0, 1.0, 2.0]);
         let half = m(0.5).sqrt() - m(1.0);
         for (i, &y) in c.grid.t.iter().enumerate() {
-            assert!(dist(&c.spine.points[i].xyz, &lift3([-1.0, y, -1.0])) <= c.spine.points[i].bound.unwrap());
+            assert!(
+                dist(&c.spine.points[i].xyz, &lift3([-1.0, y, -1.0]))
+                    <= c.spine.points[i].bound.unwrap()
+            );
             assert_box_contains(&c.contacts[0][i].xyz_box, &lift3([-1.0, y, 0.0]), "p1");
             assert_box_contains(&c.contacts[1][i].xyz_box, &lift3([0.0, y, -1.0]), "p2");
-            assert_box_contains(&c.grid.boxes[i][1], &[half.clone(), m(y), half.clone()], "f(½)");
+            assert_box_contains(
+                &c.grid.boxes[i][1],
+                &[half.clone(), m(y), half.clone()],
+                "f(½)",
+            );
         }
     }
 }
@@ -334,18 +354,61 @@ fn constant_laws_reproduce_the_16_13_example() {
 fn bad_laws_are_typed_errors_naming_the_field() {
     let planes = r#""objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "plane", "normal": [1,0,0], "d": 0}], "sector": 3"#;
     let cases = [
-        (r#""radius": {"law": "linear", "at": [[0, 1], [1, -1]]}"#, "invalid_value", "radius.at[1][1]"),
-        (r#""radius": {"law": "linear", "at": [[0, 1], [1, 0]]}"#, "invalid_value", "radius.at[1][1]"),
-        (r#""radius": {"law": "linear", "at": [[0, 1], [2, 1], [1, 1]]}"#, "invalid_value", "radius.at[2][0]"),
-        (r#""radius": {"law": "linear", "at": [[0, 1], [0, 1]]}"#, "invalid_value", "radius.at[1][0]"),
-        (r#""radius": {"law": "linear", "at": [[0, 1]]}"#, "count_mismatch", "radius.at"),
-        (r#""radius": {"law": "cubic", "at": [[0, 1], [1, 1]]}"#, "count_mismatch", "radius.at[0]"),
-        (r#""radius": {"law": "cubic", "at": [[0, 0.1, -5], [1, 0.1, 5]]}"#, "invalid_value", "radius"),
-        (r#""radius": {"law": "quadratic", "at": [[0, 1], [1, 1]]}"#, "format", "radius.law"),
-        (r#""radius": {"law": "linear", "at": [[0, 1], [1, 1]], "extra": 1}"#, "format", "radius"),
-        (r#""radius": {"law": "linear", "at": [[0, 1], [1, "x"]]}"#, "format", "radius.at[1][1]"),
-        (r#""radius": {"law": "linear", "at": [[0, 1], [1, 2]]}, "range": [-1, 1]"#, "invalid_value", "range"),
-        (r#""radius": -2, "range": [0, 1]"#, "invalid_value", "radius"),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1], [1, -1]]}"#,
+            "invalid_value",
+            "radius.at[1][1]",
+        ),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1], [1, 0]]}"#,
+            "invalid_value",
+            "radius.at[1][1]",
+        ),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1], [2, 1], [1, 1]]}"#,
+            "invalid_value",
+            "radius.at[2][0]",
+        ),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1], [0, 1]]}"#,
+            "invalid_value",
+            "radius.at[1][0]",
+        ),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1]]}"#,
+            "count_mismatch",
+            "radius.at",
+        ),
+        (
+            r#""radius": {"law": "cubic", "at": [[0, 1], [1, 1]]}"#,
+            "count_mismatch",
+            "radius.at[0]",
+        ),
+        (
+            r#""radius": {"law": "cubic", "at": [[0, 0.1, -5], [1, 0.1, 5]]}"#,
+            "invalid_value",
+            "radius",
+        ),
+        (
+            r#""radius": {"law": "quadratic", "at": [[0, 1], [1, 1]]}"#,
+            "format",
+            "radius.law",
+        ),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1], [1, "x"]]}"#,
+            "format",
+            "radius.at[1][1]",
+        ),
+        (
+            r#""radius": {"law": "linear", "at": [[0, 1], [1, 2]]}, "range": [-1, 1]"#,
+            "invalid_value",
+            "range",
+        ),
+        (
+            r#""radius": -2, "range": [0, 1]"#,
+            "invalid_value",
+            "radius",
+        ),
     ];
     for (fields, kind, field) in cases {
         let r = solve(&format!(r#"{{"op": "fillet", {planes}, {fields}}}"#));
@@ -355,10 +418,31 @@ fn bad_laws_are_typed_errors_naming_the_field() {
             "{fields}: {r}"
         );
     }
+    // an unknown field of a law: a format error within `radius`
+    let r = solve(&format!(
+        r#"{{"op": "fillet", {planes}, "radius": {{"law": "linear", "at": [[0, 1], [1, 1]], "extra": 1}}}}"#
+    ));
+    assert_eq!(r["error"]["kind"], "format", "{r}");
+    assert!(
+        r["error"]["field"].as_str().unwrap().starts_with("radius"),
+        "{r}"
+    );
     let legs = [
-        (r#""legs": [1, {"law": "linear", "at": [[0, 1], [1, -1]]}]"#, "invalid_value", "legs[1].at[1][1]"),
-        (r#""legs": [{"law": "cubic", "at": [[0, 0.1, -5], [1, 0.1, 5]]}, 1]"#, "invalid_value", "legs[0]"),
-        (r#""legs": [{"law": "linear", "at": [[0, 1], [1, 1]]}, {"law": "linear", "at": [[2, 1], [3, 1]]}]"#, "invalid_value", "range"),
+        (
+            r#""legs": [1, {"law": "linear", "at": [[0, 1], [1, -1]]}]"#,
+            "invalid_value",
+            "legs[1].at[1][1]",
+        ),
+        (
+            r#""legs": [{"law": "cubic", "at": [[0, 0.1, -5], [1, 0.1, 5]]}, 1]"#,
+            "invalid_value",
+            "legs[0]",
+        ),
+        (
+            r#""legs": [{"law": "linear", "at": [[0, 1], [1, 1]]}, {"law": "linear", "at": [[2, 1], [3, 1]]}]"#,
+            "invalid_value",
+            "range",
+        ),
     ];
     for (fields, kind, field) in legs {
         let r = solve(&format!(r#"{{"op": "chamfer", {planes}, {fields}}}"#));
@@ -370,13 +454,25 @@ fn bad_laws_are_typed_errors_naming_the_field() {
     }
     // NaN and infinity cannot be written in JSON; through the API they name the entry
     let nan = Law::linear(vec![[0.0, 1.0], [1.0, f64::NAN]], "radius");
-    assert_eq!(error_kind(nan), ("invalid_value".into(), "radius.at[1][1]".into()));
+    assert_eq!(
+        error_kind(nan),
+        ("invalid_value".into(), "radius.at[1][1]".into())
+    );
     let inf = Law::cubic(vec![[0.0, 1.0, 0.0], [f64::INFINITY, 1.0, 0.0]], "radius");
-    assert_eq!(error_kind(inf), ("invalid_value".into(), "radius.at[1][0]".into()));
+    assert_eq!(
+        error_kind(inf),
+        ("invalid_value".into(), "radius.at[1][0]".into())
+    );
     let ground = plane([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
     let pipe = cylinder([0.0, 0.0, -5.0], 2.0, [0.0, 0.0, 1.0], [0.0, 10.0]);
     let law = Law::linear(vec![[0.0, 0.5], [1.0, 0.75]], "radius").unwrap();
-    let got = geocert::ops::fillet::fillet_law(&ground, &pipe, &law, &spec(2, None, [5, 3]), &Options::default());
+    let got = geocert::ops::fillet::fillet_law(
+        &ground,
+        &pipe,
+        &law,
+        &spec(2, None, [5, 3]),
+        &Options::default(),
+    );
     assert_eq!(error_kind(got), ("unsupported".into(), "radius".into()));
 }
 
@@ -391,7 +487,10 @@ fn cli_variable_radius_case() {
         r["blend"]["radius"],
         serde_json::json!({"law": "linear", "at": [[0.0, 1.0], [2.0, 0.5], [4.0, 1.5]]})
     );
-    assert_eq!(r["blend"]["components"][0]["grid"]["t"], serde_json::json!([0.0, 1.0, 2.0, 3.0, 4.0]));
+    assert_eq!(
+        r["blend"]["components"][0]["grid"]["t"],
+        serde_json::json!([0.0, 1.0, 2.0, 3.0, 4.0])
+    );
     // the centre at ℓ = 2 is (−ρ, 2, −ρ) with ρ = 0.5 (normals (0,0,1), (1,0,0), sector 3)
     let centre = &r["curves"][0]["points"][2]["xyz"];
     assert_eq!(centre, &serde_json::json!([-0.5, 2.0, -0.5]), "{r}");

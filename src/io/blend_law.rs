@@ -42,7 +42,11 @@ pub fn law(value: &Value, field: &str) -> Result<Law, GeomError> {
                 field: format!("{field}.at[{i}]"),
                 expected: format!(
                     "{width} numbers ({})",
-                    if width == 2 { "ℓ, value" } else { "ℓ, value, slope" }
+                    if width == 2 {
+                        "ℓ, value"
+                    } else {
+                        "ℓ, value, slope"
+                    }
                 ),
                 found: row.len().to_string(),
             });

@@ -194,7 +194,10 @@ fn blend(case: &Case) -> Result<Certified<Answer>, GeomError> {
                 message: "`legs` belongs to `chamfer`".into(),
             });
         }
-        let radius = b.radius.as_ref().ok_or_else(|| missing("radius", case.op))?;
+        let radius = b
+            .radius
+            .as_ref()
+            .ok_or_else(|| missing("radius", case.op))?;
         let radius = super::blend_law::law(radius, "radius")?;
         ops::fillet::fillet_law(&a, &s, &radius, &spec, &opts)
     } else {

@@ -257,7 +257,10 @@ impl CentreCurve {
         let c1 = lift(t, &a.frame.origin());
         let w = sub(&lift(t, &b.frame.origin()), &c1);
         let ww = norm_sq(&w);
-        let (r1, r2) = (self.offset_radius(0, t).sqr(), self.offset_radius(1, t).sqr());
+        let (r1, r2) = (
+            self.offset_radius(0, t).sqr(),
+            self.offset_radius(1, t).sqr(),
+        );
         let xi = (ww.clone() + &r1 - r2) / (t.lift(2.0) * &ww);
         let q = add_scaled(&c1, &xi, &w);
         let rc2 = r1 - xi.sqr() * &ww;

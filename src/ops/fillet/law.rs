@@ -192,7 +192,11 @@ impl Law {
                     format!(
                         "the law must be positive over the range; it is {} near ℓ = {mid} \
                          (value ≈ {})",
-                        if proven { "≤ 0" } else { "not proven positive" },
+                        if proven {
+                            "≤ 0"
+                        } else {
+                            "not proven positive"
+                        },
                         self.at(&mid)
                     ),
                 ));
