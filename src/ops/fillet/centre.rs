@@ -432,7 +432,6 @@ fn cylinder_branches(probe: &CentreCurve, params: &[usize]) -> Result<Vec<Centre
     let samples = 720;
     let sphere = params.len() == 1;
     for &param in params {
-        let mut c = probe.clone();
         let form = |branch| {
             if sphere {
                 CentreForm::CylinderSphere {
@@ -443,13 +442,12 @@ fn cylinder_branches(probe: &CentreCurve, params: &[usize]) -> Result<Vec<Centre
                 CentreForm::CylinderCylinder { param, branch }
             }
         };
-        c.form = form(1.0);
         let mut min = f64::INFINITY;
         let mut max = f64::NEG_INFINITY;
         let mut alpha = f64::INFINITY;
         for i in 0..samples {
             let t = 2.0 * std::f64::consts::PI * i as f64 / samples as f64;
-            let (_, _, [a, b, g]) = c.cylinder_quadratic(param, &t);
+            let (_, _, [a, b, g]) = probe.cylinder_quadratic(param, &t);
             let disc = b * b - 4.0 * a * g;
             min = min.min(disc);
             max = max.max(disc);
