@@ -172,8 +172,8 @@ fn variable_radius_fillets_of_plane_pairs_hold_the_truth() {
             let c = pair.centre(t, &d);
             let contacts = [0, 1].map(|j| axpy(&c, &-d[j].clone(), &pair.normals[j]));
             assert!(dist(&k.spine.points[i].xyz, &c) <= k.spine.points[i].bound.unwrap());
-            for j in 0..2 {
-                assert_box_contains(&k.contacts[j][i].xyz_box, &contacts[j], "contact");
+            for (j, truth) in contacts.iter().enumerate() {
+                assert_box_contains(&k.contacts[j][i].xyz_box, truth, "contact");
             }
             // the arc (11.7) from the truth: p_m = c − (d₁m + d₂n)/(1 + cos φ)
             let cos_phi = m(signs[0] * signs[1]) * pair.cos();
@@ -241,8 +241,8 @@ fn variable_radius_stations_satisfy_the_station_equations() {
                 assert!(tight(&(norm(&r) - rho.clone())));
             }
             let truth = pair.centre(l, &signs.map(|s| m(s) * rho.clone()));
-            for x in 0..3 {
-                assert!(tight(&(st.centre[x].clone() - truth[x].clone())));
+            for (x, value) in truth.iter().enumerate() {
+                assert!(tight(&(st.centre[x].clone() - value.clone())));
             }
         }
     }
@@ -304,8 +304,8 @@ fn variable_leg_chamfers_hold_the_truth() {
             ];
             let q = pair.q(t);
             let lines = [0, 1].map(|j| axpy(&q, &-d[j].clone(), &tau[j]));
-            for j in 0..2 {
-                assert_box_contains(&k.contacts[j][i].xyz_box, &lines[j], "chamfer contact");
+            for (j, line) in lines.iter().enumerate() {
+                assert_box_contains(&k.contacts[j][i].xyz_box, line, "chamfer contact");
             }
             assert!(dist(&k.spine.points[i].xyz, &q) <= k.spine.points[i].bound.unwrap());
             let mid = [0, 1, 2].map(|x| (lines[0][x].clone() + lines[1][x].clone()) / m(2.0));
