@@ -5,72 +5,17 @@
 //! the surface is G1 with both faces along the contact curves (MPFR intervals over
 //! generated radii, angles and sectors); the degenerate cases of §11.4 as typed errors.
 
+#[path = "fillet_support/mod.rs"]
+mod fillet_support;
+
+use fillet_support::*;
 use geocert::num::rng::Rng;
-use geocert::num::MpfrInterval;
 use geocert::ops::fillet::{
-    end_tangency, BlendSpec, CentreCurve, Face, FilletSurface, SectorChoice,
+    end_tangency, BlendSpec, CentreCurve, Face, FilletSurface, Law, SectorChoice,
 };
-use geocert::ops::{Answer, BlendAnswer, Options, Shape};
-use geocert::surface::plane::Plane;
-use geocert::surface::quadrics::{Cylinder, Sphere};
-use geocert::surface::{AnySurface, Surface};
+use geocert::ops::{Answer, Options, Shape};
+use geocert::surface::Surface;
 use geocert::Status;
-
-const PREC: u32 = 256;
-
-fn plane(origin: [f64; 3], u: [f64; 3], v: [f64; 3]) -> Shape {
-    Shape::Surface(AnySurface::Plane(Plane::new(origin, u, v).unwrap()))
-}
-
-fn cylinder(origin: [f64; 3], r: f64, axis: [f64; 3], height: [f64; 2]) -> Shape {
-    Shape::Surface(AnySurface::Cylinder(
-        Cylinder::new(origin, [r, r], axis, None, height).unwrap(),
-    ))
-}
-
-fn sphere(center: [f64; 3], r: f64) -> Shape {
-    Shape::Surface(AnySurface::Sphere(
-        Sphere::new(center, r, None, None).unwrap(),
-    ))
-}
-
-fn spec(sector: u8, range: Option<[f64; 2]>, grid: [usize; 2]) -> BlendSpec {
-    BlendSpec {
-        sector: SectorChoice::Number(sector),
-        range,
-        grid,
-    }
-}
-
-fn blend(a: &Shape, b: &Shape, rho: f64, s: &BlendSpec) -> (BlendAnswer, Status) {
-    let c = geocert::ops::fillet(a, b, rho, s, &Options::default()).unwrap();
-    let status = c.status;
-    match c.value {
-        Answer::Blend(b) => (b, status),
-        other => panic!("not a blend: {other:?}"),
-    }
-}
-
-fn m(x: f64) -> MpfrInterval {
-    MpfrInterval::point(x, PREC)
-}
-
-/// `b` (a certified f64 box) contains the MPFR enclosure `truth`.
-fn contains(b: [f64; 2], truth: &MpfrInterval) -> bool {
-    b[0] <= truth.lo_f64() && truth.hi_f64() <= b[1]
-}
-
-fn assert_box_contains(b: &[[f64; 2]], truth: &[MpfrInterval], what: &str) {
-    for k in 0..truth.len() {
-        assert!(
-            contains(b[k], &truth[k]),
-            "{what}[{k}]: box {:?} misses the truth [{}, {}]",
-            b[k],
-            truth[k].lo_f64(),
-            truth[k].hi_f64()
-        );
-    }
-}
 
 /// §16.13: faces z = 0 and x = 0, body x ≤ 0, z ≤ 0, sector 3, ρ = 1.
 #[test]
@@ -127,7 +72,7 @@ fn fillet_surface(
     let signs = geocert::ops::fillet::Sector::from_number(sector)
         .unwrap()
         .signs();
-    CentreCurve::new(faces, signs.map(|s| s * rho), range)
+    CentreCurve::new(faces, signs, Law::Constant(rho), range)
         .unwrap()
         .into_iter()
         .map(|centre| FilletSurface { centre })
@@ -215,14 +160,6 @@ fn plane_cylinder_contact_curves_are_the_closed_forms() {
         }
     }
     assert!(checked > 1000);
-}
-
-/// Upper bound of the distance from the f64 point `p` to the MPFR point `q`.
-fn dist(p: &[f64], q: &[MpfrInterval; 3]) -> f64 {
-    let s = (0..3)
-        .map(|k| (q[k].clone() - m(p[k])).sqr())
-        .fold(m(0.0), |a, b| a + b);
-    s.sqrt().hi_f64()
 }
 
 /// Two cylinders with perpendicular intersecting axes (z and x), the second wider: the
@@ -359,12 +296,7 @@ fn fillet_points_lie_at_distance_rho_and_are_g1_with_both_faces() {
             1 => {
                 let r = rho * (1.5 + rng.unit().abs() * 4.0);
                 let n = [rng.unit() * 0.5, rng.unit() * 0.5, 1.0];
-                let a = Shape::Linear(geocert::ops::shape::Linear::Double(
-                    geocert::ops::LinearObject::Plane(geocert::geom::Plane::Implicit {
-                        normal: nalgebra::Vector3::new(n[0], n[1], n[2]),
-                        d: rng.unit(),
-                    }),
-                ));
+                let a = implicit_plane(n, rng.unit());
                 let b = cylinder(
                     [rng.unit(), rng.unit(), -50.0],
                     r,
@@ -438,19 +370,6 @@ fn fillet_points_lie_at_distance_rho_and_are_g1_with_both_faces() {
         }
     }
     assert!(samples > 400, "{samples}");
-}
-
-fn cross(a: &[MpfrInterval; 3], b: &[MpfrInterval; 3]) -> [MpfrInterval; 3] {
-    geocert::num::vector::cross(a, b)
-}
-
-fn norm(a: &[MpfrInterval; 3]) -> MpfrInterval {
-    geocert::num::vector::norm_sq(a).sqrt()
-}
-
-fn error_kind(r: Result<geocert::Certified<Answer>, geocert::GeomError>) -> (String, String) {
-    let e = r.expect_err("a typed error");
-    (e.kind().to_string(), e.field().to_string())
 }
 
 /// §11.4 degenerate cases and bad input: typed errors naming the field.
@@ -576,10 +495,6 @@ fn degenerate_cases_are_typed_errors() {
 /// and grid; missing fields are format errors naming them.
 #[test]
 fn cli_cases_answer_and_name_missing_fields() {
-    let solve = |text: &str| {
-        let mut read = geocert::io::read_cases(text);
-        serde_json::to_value(geocert::io::solve_case(read.remove(0))).unwrap()
-    };
     let r = solve(
         r#"{"id": 1, "op": "fillet", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "cylinder", "origin": [0,0,-5], "radius": 2, "axis": [0,0,1], "height": [0,10]}], "radius": 0.5, "side": [3,0,1], "grid": [5, 3]}"#,
     );

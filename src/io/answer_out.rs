@@ -8,6 +8,7 @@
 
 use rug::Rational;
 
+use super::blend_law::law_json;
 use super::result::{
     BlendOut, CaseResult, ComponentOut, CurveEndOut, CurveOut, CurveVertexOut, ExactLineOut,
     ExactOut, GridOut, LineOut, ParamLineOut, PointOut, SegmentOut, SingularPointOut,
@@ -128,9 +129,9 @@ fn component(c: &BlendComponent) -> ComponentOut {
 
 /// The record field of a blend (`fillet`, `chamfer`).
 fn blend(b: &BlendAnswer) -> BlendOut {
-    let (kind, radius, legs) = match b.kind {
-        BlendKind::Fillet { radius } => ("fillet", Some(radius), None),
-        BlendKind::Chamfer { legs } => ("chamfer", None, Some(legs)),
+    let (kind, radius, legs) = match &b.kind {
+        BlendKind::Fillet { radius } => ("fillet", Some(law_json(radius)), None),
+        BlendKind::Chamfer { legs } => ("chamfer", None, Some(legs.each_ref().map(law_json))),
     };
     BlendOut {
         kind,

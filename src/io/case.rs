@@ -91,10 +91,10 @@ pub struct Case {
 /// The fields of `fillet` and `chamfer` cases (docs/FORMAT.md "Blends").
 #[derive(Debug, Clone, Default, PartialEq)]
 pub struct BlendFields {
-    /// `fillet`: the ball radius ρ.
-    pub radius: Option<Double>,
-    /// `chamfer`: the legs on the first and the second object.
-    pub legs: Option<[Double; 2]>,
+    /// `fillet`: the ball radius ρ, a number or a law (read by `blend_law`).
+    pub radius: Option<serde_json::Value>,
+    /// `chamfer`: the legs on the first and the second object, each a number or a law.
+    pub legs: Option<[serde_json::Value; 2]>,
     /// The sector of OPERATIONS.md §11.1 (1–4).
     pub sector: Option<u8>,
     /// A point of the sector (the caller's side), instead of `sector`.
@@ -134,10 +134,10 @@ struct RawCase {
     pub view: Option<serde_json::Value>,
     /// `visibility`: the parameters `[u, v]` of the point on `objects[0]`.
     pub params: Option<[Double; 2]>,
-    /// `fillet`: the ball radius ρ.
-    pub radius: Option<Double>,
-    /// `chamfer`: the legs on the first and the second object.
-    pub legs: Option<[Double; 2]>,
+    /// `fillet`: the ball radius ρ (a number or a law).
+    pub radius: Option<serde_json::Value>,
+    /// `chamfer`: the legs on the first and the second object (numbers or laws).
+    pub legs: Option<[serde_json::Value; 2]>,
     /// `fillet`, `chamfer`: the sector of OPERATIONS.md §11.1 (1–4).
     pub sector: Option<u8>,
     /// `fillet`, `chamfer`: a point of the sector, instead of `sector`.

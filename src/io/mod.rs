@@ -2,6 +2,7 @@
 //! them into geometric objects, and writing results as JSON Lines.
 
 mod answer_out;
+mod blend_law;
 mod build;
 pub mod case;
 mod de;

@@ -176,10 +176,12 @@ pub struct ComponentOut {
 pub struct BlendOut {
     #[serde(rename = "type")]
     pub kind: &'static str,
-    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
-    pub radius: Option<f64>,
-    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
-    pub legs: Option<[f64; 2]>,
+    /// A number, or the radius law (docs/FORMAT.md "Blends").
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub radius: Option<serde_json::Value>,
+    /// Each a number or a law.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub legs: Option<[serde_json::Value; 2]>,
     pub sector: u8,
     pub components: Vec<ComponentOut>,
 }

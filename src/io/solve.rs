@@ -210,8 +210,12 @@ fn blend(case: &Case) -> Result<Certified<Answer>, GeomError> {
                 message: "`legs` belongs to `chamfer`".into(),
             });
         }
-        let radius = b.radius.ok_or_else(|| missing("radius", case.op))?;
-        ops::fillet(&a, &s, radius.0, &spec, &opts)
+        let radius = b
+            .radius
+            .as_ref()
+            .ok_or_else(|| missing("radius", case.op))?;
+        let radius = super::blend_law::law(radius, "radius")?;
+        ops::fillet::fillet_law(&a, &s, &radius, &spec, &opts)
     } else {
         if b.radius.is_some() {
             return Err(GeomError::Format {
@@ -219,7 +223,11 @@ fn blend(case: &Case) -> Result<Certified<Answer>, GeomError> {
                 message: "`radius` belongs to `fillet`".into(),
             });
         }
-        let legs = b.legs.ok_or_else(|| missing("legs", case.op))?;
-        ops::chamfer(&a, &s, legs.map(|d| d.0), &spec, &opts)
+        let legs = b.legs.as_ref().ok_or_else(|| missing("legs", case.op))?;
+        let legs = [
+            super::blend_law::law(&legs[0], "legs[0]")?,
+            super::blend_law::law(&legs[1], "legs[1]")?,
+        ];
+        ops::fillet::chamfer_laws(&a, &s, &legs, &spec, &opts)
     }
 }

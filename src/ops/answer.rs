@@ -164,12 +164,12 @@ pub struct CurvesAnswer {
 }
 
 /// Which blend a [`BlendAnswer`] describes.
-#[derive(Debug, Clone, Copy, PartialEq)]
+#[derive(Debug, Clone, PartialEq)]
 pub enum BlendKind {
-    /// A rolling-ball fillet of this radius (OPERATIONS.md §11.2).
-    Fillet { radius: f64 },
-    /// A chamfer with these legs on the first and the second face (§11.5).
-    Chamfer { legs: [f64; 2] },
+    /// A rolling-ball fillet of this radius or radius law (OPERATIONS.md §11.2–§11.3).
+    Fillet { radius: crate::ops::fillet::Law },
+    /// A chamfer with these legs (or leg laws) on the first and the second face (§11.5).
+    Chamfer { legs: [crate::ops::fillet::Law; 2] },
 }
 
 /// The blend surface sampled on a grid `f(t_i, z_j)` (rows along `z`, one per `t_i`).

@@ -16,6 +16,10 @@
 mod contour;
 #[path = "../fillet.rs"]
 mod fillet;
+#[path = "../fillet_curved.rs"]
+mod fillet_curved;
+#[path = "../fillet_variable.rs"]
+mod fillet_variable;
 #[path = "../intersect_sphere_sphere_exact.rs"]
 mod intersect_sphere_sphere_exact;
 #[path = "../intersect_surface_surface_certified.rs"]

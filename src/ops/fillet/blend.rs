@@ -12,6 +12,7 @@
 //!   of contact `cᵢ = q − dᵢτᵢ` on two planes.
 
 use super::centre::CentreCurve;
+use super::law::Law;
 use crate::certify::dual::Dual;
 use crate::num::vector::{add, add_scaled, cross, dot, norm_sq, scale, sub};
 use crate::num::Real;
@@ -71,7 +72,7 @@ pub struct FilletSurface {
 impl BlendFormula for FilletSurface {
     fn point<T: Real>(&self, t: &T, z: &T) -> [T; 3] {
         let st = self.centre.station(t);
-        let [d1, d2] = self.centre.offsets.map(|d| t.lift(d));
+        let [d1, d2] = self.centre.offsets(t);
         let one = t.one_like();
         let opc = one.clone() + &st.cos_phi;
         // (11.6) p_m = c − (d₁m + d₂n)/(1 + cos φ)
@@ -105,18 +106,26 @@ impl Surface for FilletSurface {
     }
 }
 
-/// The chamfer between two planes (§11.5, constant legs): `edge` is the line of the
-/// planes (a [`CentreCurve`] with zero offsets), `offsets` the signed legs `d₁`, `d₂`.
+/// The chamfer between two planes (§11.5): `edge` is the line of the planes (a
+/// [`CentreCurve`] with zero offsets, `t` its arc length `ℓ`), the signed legs are
+/// `dᵢ(ℓ) = signs[i]·legs[i](ℓ)` (constant legs (11.10), or laws of `ℓ` (11.11)).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ChamferSurface {
     pub edge: CentreCurve,
-    pub offsets: [f64; 2],
+    /// The sign of each leg's offset (±1).
+    pub signs: [f64; 2],
+    pub legs: [Law; 2],
 }
 
 impl ChamferSurface {
-    /// The lines of contact `cᵢ(t) = q(t) − dᵢτᵢ` with the transversals (11.9)
+    /// The signed legs `d₁(t)`, `d₂(t)`.
+    pub fn offsets<T: Real>(&self, t: &T) -> [T; 2] {
+        [0, 1].map(|k| t.lift(self.signs[k]) * &self.legs[k].at(t))
+    }
+
+    /// The lines of contact `cᵢ(t) = q(t) − dᵢ(t)τᵢ` with the transversals (11.9)
     /// `τ₁ = m × t̂_e`, `τ₂ = t̂_e × n`, `t̂_e = (m × n)/|m × n|`, so that
-    /// `c₁ + d₁τ₁ = c₂ + d₂τ₂ = q` (11.10).
+    /// `c₁ + d₁τ₁ = c₂ + d₂τ₂ = q` (11.10), (11.11); `cᵢ − q ⟂ t̂_e`, the station plane.
     pub fn contacts<T: Real>(&self, t: &T) -> [[T; 3]; 2] {
         let st = self.edge.station(t);
         let (m, n) = (&st.normal[0], &st.normal[1]);
@@ -124,7 +133,8 @@ impl ChamferSurface {
         let len = norm_sq(&e).sqrt();
         let te = e.map(|c| c / &len);
         let tau = [cross(m, &te), cross(&te, n)];
-        [0, 1].map(|k| add_scaled(&st.centre, &-t.lift(self.offsets[k]), &tau[k]))
+        let d = self.offsets(t);
+        [0, 1].map(|k| add_scaled(&st.centre, &-d[k].clone(), &tau[k]))
     }
 }
 

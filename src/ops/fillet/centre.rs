@@ -12,7 +12,14 @@
 //!   `u` and `v(u)` solves the plane's linear equation;
 //! * cylinder / cylinder (axes not parallel): `t` is the angle `u` of one cylinder
 //!   and its height solves the other's quadratic `α v² + β v + γ = 0` on one branch
-//!   `v = (−β ± √(β² − 4αγ))/(2α)`, where the discriminant stays positive.
+//!   `v = (−β ± √(β² − 4αγ))/(2α)`, where the discriminant stays positive;
+//! * sphere / cylinder: the same with the offset sphere's quadratic `|w₀ + vZ|² = R'²`
+//!   (`α = 1`), when its discriminant is positive for every angle (two closed
+//!   branches; a centre curve that turns back in the angle is not built);
+//! * sphere / sphere (distinct centres): the circle of the two offset spheres,
+//!   `x(t) = q + ρ_c (cos t E₁ + sin t E₂)` in the plane normal to the line of centres,
+//!   `q = c₁ + ξw`, `w = c₂ − c₁`, `ξ = (|w|² + R₁'² − R₂'²)/(2|w|²)`,
+//!   `ρ_c² = R₁'² − ξ²|w|²`.
 //!
 //! Each formula is written once over [`Real`] ([`CentreCurve::point`]), so over
 //! intervals it encloses the exact centre of the exact input, and the conditions
@@ -20,6 +27,7 @@
 //! be proven over parameter boxes (`prove`).
 
 use super::face::Face;
+use super::law::Law;
 use crate::error::GeomError;
 use crate::num::vector::{add, add_scaled, cross, dot, lift, norm_sq, scale, sub};
 use crate::num::Real;
@@ -41,14 +49,25 @@ pub enum CentreForm {
         param: usize,
         branch: f64,
     },
+    /// `t` is the angle of the cylinder face `cylinder` (the other is a sphere);
+    /// `branch` is the sign of the root (±1).
+    CylinderSphere {
+        cylinder: usize,
+        branch: f64,
+    },
+    SphereSphere,
 }
 
-/// One ball-centre curve: the two faces, the signed offsets `d₁ = σ₁ρ`, `d₂ = σ₂ρ`
-/// (11.1), the closed form and its parameter range.
+/// One ball-centre curve: the two faces, the signs `σ₁`, `σ₂` of the sector and the
+/// radius law `ρ` (the signed offsets are `d₁ = σ₁ρ`, `d₂ = σ₂ρ`, (11.1); a law
+/// `ρ(ℓ)` of the spine's arc length for two planes, §11.3), the closed form and its
+/// parameter range.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CentreCurve {
     pub faces: [Face; 2],
-    pub offsets: [f64; 2],
+    /// `σ₁`, `σ₂` as ±1.
+    pub signs: [f64; 2],
+    pub radius: Law,
     pub form: CentreForm,
     pub range: [f64; 2],
     pub closed: bool,
@@ -87,24 +106,34 @@ fn unsupported(reason: &str) -> GeomError {
 
 impl CentreCurve {
     /// The curve's closed form for two faces; `range` is required for two planes
-    /// (field `range`). Errors: other pairs of faces (`unsupported`).
+    /// (field `range`; a radius law's span by default). Errors: other pairs of faces
+    /// (`unsupported`); a non-constant law for faces other than two planes
+    /// (`unsupported`, field `radius`).
     pub fn new(
         faces: [Face; 2],
-        offsets: [f64; 2],
+        signs: [f64; 2],
+        radius: Law,
         range: Option<[f64; 2]>,
     ) -> Result<Vec<CentreCurve>, GeomError> {
         let is_plane = |f: &Face| matches!(f, Face::Plane { .. } | Face::ImplicitPlane { .. });
         let turn = [0.0, 2.0 * std::f64::consts::PI];
+        if radius.as_constant().is_none() && !(is_plane(&faces[0]) && is_plane(&faces[1])) {
+            return Err(GeomError::Unsupported {
+                field: "radius".into(),
+                reason: "a variable radius is built between two planes in this build".into(),
+            });
+        }
         let curve = |form, range, closed| CentreCurve {
             faces: faces.clone(),
-            offsets,
+            signs,
+            radius: radius.clone(),
             form,
             range,
             closed,
         };
         let form = match (&faces[0], &faces[1]) {
             (a, b) if is_plane(a) && is_plane(b) => {
-                let range = range.ok_or_else(|| GeomError::Format {
+                let range = range.or(radius.span()).ok_or_else(|| GeomError::Format {
                     field: "range".into(),
                     message: "a blend of two unbounded planes needs `range`, the arc-length \
                               interval of the centre line"
@@ -118,31 +147,55 @@ impl CentreCurve {
             (a, Face::Cylinder(_)) if is_plane(a) => plane_cylinder(&faces, 1)?,
             (Face::Cylinder(_), Face::Cylinder(_)) => {
                 let probe = curve(CentreForm::PlanePlane, turn, true);
-                return Ok(cylinder_branches(&probe)?
+                return Ok(cylinder_branches(&probe, &[0, 1])?
                     .into_iter()
                     .map(|form| curve(form, turn, true))
                     .collect());
             }
+            (Face::Cylinder(_), Face::Sphere(_)) | (Face::Sphere(_), Face::Cylinder(_)) => {
+                let probe = curve(CentreForm::PlanePlane, turn, true);
+                let cylinder = usize::from(matches!(faces[1], Face::Cylinder(_)));
+                return Ok(cylinder_branches(&probe, &[cylinder])?
+                    .into_iter()
+                    .map(|form| curve(form, turn, true))
+                    .collect());
+            }
+            (Face::Sphere(a), Face::Sphere(b)) => {
+                if a.frame.origin() == b.frame.origin() {
+                    return Err(unsupported(
+                        "concentric spheres have no edge (their offsets are concentric \
+                         spheres): no fillet",
+                    ));
+                }
+                CentreForm::SphereSphere
+            }
             _ => {
                 return Err(unsupported(
                     "closed-form centre curves exist here for plane/plane, sphere/plane, \
-                     plane/cylinder and cylinder/cylinder",
+                     plane/cylinder, cylinder/cylinder, sphere/cylinder and sphere/sphere",
                 ))
             }
         };
         Ok(vec![curve(form, turn, true)])
     }
 
-    /// The offset radius `R + d` of a sphere or cylinder face `k`.
-    fn offset_radius<T: Real>(&self, k: usize, like: &T) -> T {
-        like.lift(self.faces[k].radius().unwrap_or(0.0)) + like.lift(self.offsets[k])
+    /// The signed offsets `d_k(t) = σ_k ρ(t)` (exact for a constant radius).
+    pub fn offsets<T: Real>(&self, t: &T) -> [T; 2] {
+        let rho = self.radius.at(t);
+        self.signs.map(|s| t.lift(s) * &rho)
     }
 
-    /// The offset plane `m·x = h + d` of plane face `k`.
-    fn offset_plane<T: Real>(&self, k: usize, like: &T) -> ([T; 3], T) {
-        match self.faces[k].plane_form(like) {
-            Some(p) => (p.m, p.h + like.lift(self.offsets[k])),
-            None => (lift(like, &[f64::NAN; 3]), like.lift(f64::NAN)),
+    /// The offset radius `R + d` of a sphere or cylinder face `k` (constant radius).
+    fn offset_radius<T: Real>(&self, k: usize, t: &T) -> T {
+        t.lift(self.faces[k].radius().unwrap_or(0.0)) + &self.offsets(t)[k]
+    }
+
+    /// The offset plane `m·x = h + d(t)` of plane face `k`.
+    fn offset_plane<T: Real>(&self, k: usize, t: &T) -> ([T; 3], T) {
+        let d = self.offsets(t)[k].clone();
+        match self.faces[k].plane_form(t) {
+            Some(p) => (p.m, p.h + d),
+            None => (lift(t, &[f64::NAN; 3]), t.lift(f64::NAN)),
         }
     }
 
@@ -165,8 +218,16 @@ impl CentreCurve {
                 let v = (h - dot(&m, &base)) / dot(&m, &z);
                 add_scaled(&base, &v, &z)
             }
-            CentreForm::CylinderCylinder { param, branch } => {
-                let (base, z, [alpha, beta, gamma]) = self.cylinder_quadratic(param, t);
+            CentreForm::SphereSphere => {
+                let (q, rc2, axis) = self.sphere_sphere_circle(t);
+                circle_point(&q, &rc2.sqrt(), &axis, t)
+            }
+            CentreForm::CylinderCylinder {
+                param: cylinder,
+                branch,
+            }
+            | CentreForm::CylinderSphere { cylinder, branch } => {
+                let (base, z, [alpha, beta, gamma]) = self.cylinder_quadratic(cylinder, t);
                 let disc = beta.sqr() - t.lift(4.0) * alpha.clone() * &gamma;
                 let v = (-beta + t.lift(branch) * disc.sqrt()) / (t.lift(2.0) * alpha);
                 add_scaled(&base, &v, &z)
@@ -183,14 +244,28 @@ impl CentreCurve {
         let e = dot(&m, &c) - h;
         let q = add_scaled(&c, &-e.clone(), &m);
         let rc = (self.offset_radius(sphere, t).sqr() - e.sqr()).sqrt();
-        let (e1, e2) = in_plane_basis(&m);
-        add(
-            &q,
-            &add(
-                &scale(&(rc.clone() * t.cos()), &e1),
-                &scale(&(rc * t.sin()), &e2),
-            ),
-        )
+        circle_point(&q, &rc, &m, t)
+    }
+
+    /// The circle of the two offset spheres: its centre `q`, `ρ_c²` and the unit
+    /// normal of its plane (module doc).
+    fn sphere_sphere_circle<T: Real>(&self, t: &T) -> ([T; 3], T, [T; 3]) {
+        let (Face::Sphere(a), Face::Sphere(b)) = (&self.faces[0], &self.faces[1]) else {
+            let nan = lift(t, &[f64::NAN; 3]);
+            return (nan.clone(), t.lift(f64::NAN), nan);
+        };
+        let c1 = lift(t, &a.frame.origin());
+        let w = sub(&lift(t, &b.frame.origin()), &c1);
+        let ww = norm_sq(&w);
+        let (r1, r2) = (
+            self.offset_radius(0, t).sqr(),
+            self.offset_radius(1, t).sqr(),
+        );
+        let xi = (ww.clone() + &r1 - r2) / (t.lift(2.0) * &ww);
+        let q = add_scaled(&c1, &xi, &w);
+        let rc2 = r1 - xi.sqr() * &ww;
+        let len = ww.sqrt();
+        (q, rc2, w.map(|c| c / &len))
     }
 
     /// `o + R'(cos t X + sin t Y)` and `Z` of cylinder face `k` offset by its `d`.
@@ -205,18 +280,25 @@ impl CentreCurve {
     }
 
     /// The base point and axis of cylinder `param` at angle `t`, and the coefficients
-    /// `(α, β, γ)` of the other offset cylinder's equation in the height `v`:
-    /// `|g(w₀) + v g(Z)|² = R₂'²`, `g(y) = y − (y·Z₂)Z₂`, `w₀ = base − o₂`.
+    /// `(α, β, γ)` of the other offset surface's equation in the height `v`:
+    /// `|g(w₀) + v g(Z)|² = R₂'²`, `w₀ = base − o₂`, with `g(y) = y − (y·Z₂)Z₂` for a
+    /// cylinder (axis `Z₂`) and `g(y) = y` for a sphere (centre `o₂`).
     fn cylinder_quadratic<T: Real>(&self, param: usize, t: &T) -> ([T; 3], [T; 3], [T; 3]) {
         let (base, z) = self.cylinder_base(param, t);
         let other = 1 - param;
-        let Face::Cylinder(c2) = &self.faces[other] else {
-            let nan = t.lift(f64::NAN);
-            return (base, z, [nan.clone(), nan.clone(), nan]);
+        let (origin, z2) = match &self.faces[other] {
+            Face::Cylinder(c2) => (c2.frame.origin(), Some(c2.frame.axes(t)[2].clone())),
+            Face::Sphere(s2) => (s2.frame.origin(), None),
+            _ => {
+                let nan = t.lift(f64::NAN);
+                return (base, z, [nan.clone(), nan.clone(), nan]);
+            }
         };
-        let z2 = c2.frame.axes(t)[2].clone();
-        let g = |y: &[T; 3]| add_scaled(y, &-dot(y, &z2), &z2);
-        let (gw, gz) = (g(&sub(&base, &lift(t, &c2.frame.origin()))), g(&z));
+        let g = |y: &[T; 3]| match &z2 {
+            Some(z2) => add_scaled(y, &-dot(y, z2), z2),
+            None => y.clone(),
+        };
+        let (gw, gz) = (g(&sub(&base, &lift(t, &origin))), g(&z));
         let r2 = self.offset_radius(other, t);
         let coefficients = [
             norm_sq(&gz),
@@ -230,8 +312,9 @@ impl CentreCurve {
     pub fn station<T: Real>(&self, t: &T) -> Station<T> {
         let centre = self.point(t);
         let normal = [0, 1].map(|k| self.faces[k].normal_at(&centre));
-        let contact = [0, 1].map(|k| add_scaled(&centre, &-t.lift(self.offsets[k]), &normal[k]));
-        let sign = (self.offsets[0] * self.offsets[1]).signum();
+        let d = self.offsets(t);
+        let contact = [0, 1].map(|k| add_scaled(&centre, &-d[k].clone(), &normal[k]));
+        let sign = self.signs[0] * self.signs[1];
         let cos_phi = t.lift(sign) * dot(&normal[0], &normal[1]);
         Station {
             centre,
@@ -262,7 +345,13 @@ impl CentreCurve {
                 let (_, z) = self.cylinder_base(cylinder, t);
                 out.push((dot(&m, &z).sqr(), Condition::Real));
             }
-            CentreForm::CylinderCylinder { param, .. } => {
+            CentreForm::SphereSphere => {
+                out.push((self.sphere_sphere_circle(t).1, Condition::Real));
+            }
+            CentreForm::CylinderCylinder { param, .. }
+            | CentreForm::CylinderSphere {
+                cylinder: param, ..
+            } => {
                 let (_, _, [alpha, beta, gamma]) = self.cylinder_quadratic(param, t);
                 out.push((alpha.clone(), Condition::Real));
                 out.push((beta.sqr() - t.lift(4.0) * alpha * &gamma, Condition::Real));
@@ -304,6 +393,18 @@ fn plane_cylinder(faces: &[Face; 2], cylinder: usize) -> Result<CentreForm, Geom
     Ok(CentreForm::PlaneCylinder { cylinder })
 }
 
+/// `q + r(cos t E₁ + sin t E₂)` with `(E₁, E₂)` = [`in_plane_basis`] of the unit `m`.
+fn circle_point<T: Real>(q: &[T; 3], r: &T, m: &[T; 3], t: &T) -> [T; 3] {
+    let (e1, e2) = in_plane_basis(m);
+    add(
+        q,
+        &add(
+            &scale(&(r.clone() * t.cos()), &e1),
+            &scale(&(r.clone() * t.sin()), &e2),
+        ),
+    )
+}
+
 /// Two orthonormal vectors `E₁ = normalize(m × e_k)`, `E₂ = m × E₁` perpendicular to
 /// the unit `m`, `e_k` the coordinate vector least aligned with `m` (chosen from the
 /// midpoint, so one choice serves a whole evaluation).
@@ -321,21 +422,32 @@ fn in_plane_basis<T: Real>(m: &[T; 3]) -> ([T; 3], [T; 3]) {
     (e1, e2)
 }
 
-/// The branches of two cylinders: parametrised by the angle of the first cylinder
-/// whose discriminant is positive at every sample of a float scan (the curve does not
-/// turn back in that angle), both roots. Errors: parallel axes, or both angles turn
-/// back (`unsupported`). No branch: the offsets do not meet (sampled).
-fn cylinder_branches(probe: &CentreCurve) -> Result<Vec<CentreForm>, GeomError> {
+/// The branches of a cylinder pair or a sphere/cylinder pair: parametrised by the
+/// angle of the first cylinder of `params` whose discriminant is positive at every
+/// sample of a float scan (the curve does not turn back in that angle), both roots.
+/// Errors: parallel axes, or the curve turns back in every angle tried
+/// (`unsupported`). No branch (the discriminant ≤ 0 at every sample): both roots,
+/// which the proof then finds absent, or touching (tangent faces).
+fn cylinder_branches(probe: &CentreCurve, params: &[usize]) -> Result<Vec<CentreForm>, GeomError> {
     let samples = 720;
-    for param in 0..2 {
-        let mut c = probe.clone();
-        c.form = CentreForm::CylinderCylinder { param, branch: 1.0 };
+    let sphere = params.len() == 1;
+    for &param in params {
+        let form = |branch| {
+            if sphere {
+                CentreForm::CylinderSphere {
+                    cylinder: param,
+                    branch,
+                }
+            } else {
+                CentreForm::CylinderCylinder { param, branch }
+            }
+        };
         let mut min = f64::INFINITY;
         let mut max = f64::NEG_INFINITY;
         let mut alpha = f64::INFINITY;
         for i in 0..samples {
             let t = 2.0 * std::f64::consts::PI * i as f64 / samples as f64;
-            let (_, _, [a, b, g]) = c.cylinder_quadratic(param, &t);
+            let (_, _, [a, b, g]) = probe.cylinder_quadratic(param, &t);
             let disc = b * b - 4.0 * a * g;
             min = min.min(disc);
             max = max.max(disc);
@@ -347,16 +459,16 @@ fn cylinder_branches(probe: &CentreCurve) -> Result<Vec<CentreForm>, GeomError> 
                  not in this build",
             ));
         }
-        // Negative everywhere (no branch): both roots of this angle, which the proof
-        // then finds absent over the whole range.
-        if min > 0.0 || max < 0.0 {
-            return Ok([1.0, -1.0]
-                .map(|branch| CentreForm::CylinderCylinder { param, branch })
-                .to_vec());
+        if min > 0.0 || max <= 0.0 {
+            return Ok([1.0, -1.0].map(form).to_vec());
         }
     }
-    Err(unsupported(
+    Err(unsupported(if sphere {
+        "the centre curve of this sphere and cylinder turns back in the cylinder's angle \
+         (the offset sphere does not enclose the whole offset cylinder's cross-section \
+         circle): not in this build"
+    } else {
         "the centre curve of these cylinders turns back in both angles (it is not a \
-         graph over either cylinder's angle): not in this build",
-    ))
+         graph over either cylinder's angle): not in this build"
+    }))
 }
