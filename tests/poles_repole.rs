@@ -602,7 +602,7 @@ fn surfaces_are_the_original_ones() {
                 let l = (0..3)
                     .map(|c| (x[c].clone() - m(o[c])) * ax[c].clone())
                     .fold(m(0.0), |a, b| a + b);
-                q = q + (l / m(k[i])).sqr();
+                q += (l / m(k[i])).sqr();
             }
             assert!(q.contains_zero() && q.mag() < 1e-55, "case {case}: {q:?}");
             // The way back and the original surface.

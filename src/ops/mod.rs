@@ -21,6 +21,7 @@
 pub mod algebraic;
 pub mod answer;
 pub mod beyond_range;
+pub mod blend_law;
 pub mod certified;
 pub mod classify;
 pub mod closed_surface;

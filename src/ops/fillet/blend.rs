@@ -12,7 +12,7 @@
 //!   of contact `cᵢ = q − dᵢτᵢ` on two planes.
 
 use super::centre::CentreCurve;
-use super::law::Law;
+use crate::ops::blend_law::Law;
 use crate::certify::dual::Dual;
 use crate::num::vector::{add, add_scaled, cross, dot, norm_sq, scale, sub};
 use crate::num::Real;

@@ -27,7 +27,7 @@
 //! be proven over parameter boxes (`prove`).
 
 use super::face::Face;
-use super::law::Law;
+use crate::ops::blend_law::Law;
 use crate::error::GeomError;
 use crate::num::vector::{add, add_scaled, cross, dot, lift, norm_sq, scale, sub};
 use crate::num::Real;

@@ -43,7 +43,6 @@
 pub mod blend;
 pub mod centre;
 pub mod face;
-pub mod law;
 mod prove;
 mod report;
 pub mod sector;
@@ -51,7 +50,7 @@ pub mod sector;
 pub use blend::{end_tangency, BlendFormula, ChamferSurface, FilletSurface};
 pub use centre::{CentreCurve, CentreForm, Condition, Station};
 pub use face::Face;
-pub use law::Law;
+pub use crate::ops::blend_law::Law;
 pub use sector::{sector_of_point, Sector};
 
 use crate::certificate::{Arithmetic, Certified, Status};

@@ -14,6 +14,9 @@
 //! over it; an interval straddling stations is split into the pieces it touches and
 //! the results are joined by hulls ([`piecewise_jet`]). [`Law::prove_positive`]
 //! proves `ρ > 0` over a range by that enclosure over a cover of it.
+//!
+//! It sits beside [`crate::ops::fillet`] (re-exported there as `fillet::Law`) because
+//! the answer of a blend ([`crate::ops::answer::BlendKind`]) carries it.
 
 use crate::curve::domain::piecewise_jet;
 use crate::error::GeomError;
