@@ -169,7 +169,9 @@ pub enum BlendKind {
     /// A rolling-ball fillet of this radius or radius law (OPERATIONS.md §11.2–§11.3).
     Fillet { radius: crate::ops::blend_law::Law },
     /// A chamfer with these legs (or leg laws) on the first and the second face (§11.5).
-    Chamfer { legs: [crate::ops::blend_law::Law; 2] },
+    Chamfer {
+        legs: [crate::ops::blend_law::Law; 2],
+    },
 }
 
 /// The blend surface sampled on a grid `f(t_i, z_j)` (rows along `z`, one per `t_i`).

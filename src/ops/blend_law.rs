@@ -15,7 +15,7 @@
 //! the results are joined by hulls ([`piecewise_jet`]). [`Law::prove_positive`]
 //! proves `ρ > 0` over a range by that enclosure over a cover of it.
 //!
-//! It sits beside [`crate::ops::fillet`] (re-exported there as `fillet::Law`) because
+//! It sits beside [`crate::ops::fillet`](mod@crate::ops::fillet) (re-exported there as `fillet::Law`) because
 //! the answer of a blend ([`crate::ops::answer::BlendKind`]) carries it.
 
 use crate::curve::domain::piecewise_jet;

@@ -4,13 +4,13 @@
 //! The picture is built in three steps, each a plain function of the one before, so that
 //! the same input gives the same bytes:
 //!
-//! 1. [`model`]: the 3D drawing — curves sampled as polylines, surfaces as iso-parameter
+//! 1. [`model`](mod@model): the 3D drawing — curves sampled as polylines, surfaces as iso-parameter
 //!    nets with their contours (`I = n·w = 0` of (13.10) found by marching squares over
 //!    the parameter domain, [`contour`]), polyhedra as edges, and the answer's points,
 //!    curves, singular points, blend surfaces and (on request) certified boxes. Every
 //!    surface is also tessellated into triangles, the occluders. Unbounded objects (lines,
 //!    planes) are cut to a window around the bounded ones.
-//! 2. [`scene`]: the projection to the picture plane (§13.6) and the hidden-line split:
+//! 2. [`scene`](mod@scene): the projection to the picture plane (§13.6) and the hidden-line split:
 //!    a depth buffer of the occluders at picture resolution ([`depth`]) decides for each
 //!    sample of each polyline whether a surface lies in front of it; hidden runs are
 //!    drawn dashed. This is a picture, not a certificate: the visibility a case can rely

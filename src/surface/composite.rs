@@ -8,7 +8,7 @@
 //! The seam `u = u_c(v)` goes to `t = t_c(v)`, so `S` is continuous when the pieces meet
 //! there, `G(t_c(v), v) = R(u_c(v), v)` (the caller's [`Seam`] says so: `G`'s second
 //! parameter is synchronised with `R`'s `v`, as §14.3 requires after the poles were
-//! re-assigned so that the intersection is a graph on both). [S]'s map
+//! re-assigned so that the intersection is a graph on both). \[S\]'s map
 //! `t = t_c (u − u_c)/(u_p − u_c)` sends the seam to `t = 0` instead, which is a jump
 //! unless `t_c = 0`.
 //!

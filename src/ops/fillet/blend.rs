@@ -12,10 +12,10 @@
 //!   of contact `cᵢ = q − dᵢτᵢ` on two planes.
 
 use super::centre::CentreCurve;
-use crate::ops::blend_law::Law;
 use crate::certify::dual::Dual;
 use crate::num::vector::{add, add_scaled, cross, dot, norm_sq, scale, sub};
 use crate::num::Real;
+use crate::ops::blend_law::Law;
 use crate::surface::Surface;
 
 /// A blend written as one formula `f(t, z)` over any [`Real`].

@@ -27,10 +27,10 @@
 //! be proven over parameter boxes (`prove`).
 
 use super::face::Face;
-use crate::ops::blend_law::Law;
 use crate::error::GeomError;
 use crate::num::vector::{add, add_scaled, cross, dot, lift, norm_sq, scale, sub};
 use crate::num::Real;
+use crate::ops::blend_law::Law;
 
 /// Which closed form the curve uses.
 #[derive(Debug, Clone, Copy, PartialEq)]

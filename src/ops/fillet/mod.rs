@@ -9,7 +9,7 @@
 //!   `cos φ`).
 //! * [`blend`]: the fillet surface (11.5)–(11.7) and the chamfer surface (11.8)–(11.10)
 //!   as [`crate::surface::Surface`]s of the model.
-//! * [`law`]: radius and leg laws `ρ(ℓ)` along the spine (§11.3, (11.11)): constant,
+//! * [`Law`] (module `ops::blend_law`): radius and leg laws `ρ(ℓ)` along the spine (§11.3, (11.11)): constant,
 //!   piecewise linear, cubic Hermite; their positivity proven over the range.
 //! * `prove`: every condition under which the closed form is the fillet's centre
 //!   curve, proven over a cover of its whole range by f64 intervals.
@@ -47,10 +47,10 @@ mod prove;
 mod report;
 pub mod sector;
 
+pub use crate::ops::blend_law::Law;
 pub use blend::{end_tangency, BlendFormula, ChamferSurface, FilletSurface};
 pub use centre::{CentreCurve, CentreForm, Condition, Station};
 pub use face::Face;
-pub use crate::ops::blend_law::Law;
 pub use sector::{sector_of_point, Sector};
 
 use crate::certificate::{Arithmetic, Certified, Status};
