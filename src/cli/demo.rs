@@ -1,7 +1,9 @@
 //! `geocert demo`: the worked examples of OPERATIONS.md §16.2–§16.9 and a few degenerate
 //! linear ones, then curved cases (§16.3 ellipse feet, §16.4 line ∩ sphere, §16.6 conics,
 //! a parabola touching its osculating circle (a proven 4-fold point),
-//! a torus, surface ∩ surface curves with singular points, three spheres), solved
+//! a torus, surface ∩ surface curves with singular points, three spheres, the §16.10
+//! ellipsoid section, a point hidden by a sphere (§16.14 visibility), a fillet whose
+//! radius grows along the edge), solved
 //! through the same path as `geocert solve` and printed as a table of status, kind,
 //! point and time.
 
