@@ -73,6 +73,21 @@ pub fn answer_text(r: &CaseResult) -> String {
         )
     } else if let Some(seg) = &r.segment {
         format!("{} – {}", vector_text(&seg.a.xyz), vector_text(&seg.b.xyz))
+    } else if let Some(conic) = &r.conic {
+        // A plane section of a quadric: the exact conic (its curve list may be empty).
+        let mut t = conic.kind.to_string();
+        if let Some(c) = &conic.center {
+            t.push_str(&format!(", centre {}", vector_text(&c.value)));
+        }
+        let axes: Vec<String> = conic
+            .axes
+            .iter()
+            .filter_map(|a| a.length.value.first().map(|l| format!("{l}")))
+            .collect();
+        if !axes.is_empty() {
+            t.push_str(&format!(", semi-axes {}", axes.join(", ")));
+        }
+        t
     } else if let Some(curves) = &r.curves {
         curves_text(curves, r.singular_points.as_deref().unwrap_or(&[]))
     } else {
