@@ -477,3 +477,60 @@ fn the_command_writes_one_picture_per_case_and_names_bad_ones() {
     assert!(String::from_utf8_lossy(&bad.stderr).contains("--view"));
     std::fs::remove_dir_all(&dir).ok();
 }
+
+/// Outlines where the closed form is a tangency condition: a sphere seen from an eye
+/// point (every outline vertex `x` has `(x − c)·(E − x) = 0`: the ray from the eye
+/// touches the sphere there), and a torus in parallel views (the torus normal at `x`,
+/// `x − q` with `q` the nearest point of the core circle, is perpendicular to `d`).
+#[test]
+fn central_and_torus_outlines_are_tangencies() {
+    let mut rng = Rng(73);
+    for _ in 0..8 {
+        let c = [
+            rng.range(-2.0, 2.0),
+            rng.range(-2.0, 2.0),
+            rng.range(-2.0, 2.0),
+        ];
+        let r = rng.range(0.5, 1.5);
+        let eye = [
+            c[0] + rng.range(4.0, 8.0),
+            c[1] + rng.range(-6.0, 6.0),
+            c[2] + rng.range(-6.0, 6.0),
+        ];
+        let view = View::central(eye, c, 1.0).expect("a central view");
+        let scene = draw(&[sphere(c, r)], &view);
+        let mut n = 0;
+        for s in scene.strokes.iter().filter(|s| s.role == Role::Contour) {
+            for x in &s.source {
+                let (xc, ex) = (
+                    [0, 1, 2].map(|k| x[k] - c[k]),
+                    [0, 1, 2].map(|k| eye[k] - x[k]),
+                );
+                let cos = dot(&xc, &ex) / (r * dot(&ex, &ex).sqrt());
+                assert!(cos.abs() < 5e-3, "central outline vertex {x:?}: cos {cos}");
+                n += 1;
+            }
+        }
+        assert!(n > 50, "{n}");
+    }
+    let (major, minor) = (3.0, 1.0);
+    let torus = r#"{"op": "silhouette", "view": "isometric", "objects": [{"type": "torus", "center": [0, 0, 0], "major": 3, "minor": 1, "axis": [0, 0, 1]}]}"#;
+    let read = read_cases(torus).remove(0).case.expect("a case");
+    let shapes = picture::shapes(&read).expect("shapes");
+    for view in views(&mut rng, 6) {
+        let d = toward(&view);
+        let scene = draw(&shapes, &view);
+        let mut n = 0;
+        for s in scene.strokes.iter().filter(|s| s.role == Role::Contour) {
+            for x in &s.source {
+                let rho = x[0].hypot(x[1]);
+                let q = [major * x[0] / rho, major * x[1] / rho, 0.0];
+                let normal = [x[0] - q[0], x[1] - q[1], x[2] - q[2]];
+                let cos = dot(&normal, &d) / minor;
+                assert!(cos.abs() < 5e-3, "torus outline vertex {x:?}: cos {cos}");
+                n += 1;
+            }
+        }
+        assert!(n > 50, "{n}");
+    }
+}
