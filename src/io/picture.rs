@@ -11,12 +11,7 @@ use rug::Rational;
 
 /// The shapes of a case in the order its answer's parameters follow.
 pub fn shapes(case: &Case) -> Result<Vec<Shape>, GeomError> {
-    let mut out = case
-        .objects
-        .iter()
-        .enumerate()
-        .map(|(i, s)| shape(s, &format!("objects[{i}]")))
-        .collect::<Result<Vec<_>, _>>()?;
+    let mut out = super::solve::objects(case)?;
     if let Some(onto) = &case.onto {
         out.push(shape(onto, "onto")?);
     }

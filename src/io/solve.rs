@@ -77,16 +77,20 @@ fn missing(field: &str, op: Op) -> GeomError {
     }
 }
 
+/// The case's `objects` as shapes, errors naming `objects[i]`.
+pub fn objects(case: &Case) -> Result<Vec<crate::ops::Shape>, GeomError> {
+    case.objects
+        .iter()
+        .enumerate()
+        .map(|(i, s)| shape(s, &format!("objects[{i}]")))
+        .collect()
+}
+
 /// The certified answer of a case, through the front door.
 pub fn answer(case: &Case) -> Result<Certified<Answer>, GeomError> {
     match case.op {
         Op::Intersect => {
-            let shapes = case
-                .objects
-                .iter()
-                .enumerate()
-                .map(|(i, s)| shape(s, &format!("objects[{i}]")))
-                .collect::<Result<Vec<_>, _>>()?;
+            let shapes = objects(case)?;
             ops::intersect(&shapes, &options(case)?)
         }
         Op::Project => {
@@ -149,12 +153,7 @@ pub fn answer(case: &Case) -> Result<Certified<Answer>, GeomError> {
             )
         }
         Op::Visibility => {
-            let shapes = case
-                .objects
-                .iter()
-                .enumerate()
-                .map(|(i, s)| shape(s, &format!("objects[{i}]")))
-                .collect::<Result<Vec<_>, _>>()?;
+            let shapes = objects(case)?;
             let params = case.params.ok_or_else(|| missing("params", case.op))?;
             let view = case.view.as_ref().ok_or_else(|| missing("view", case.op))?;
             ops::view::visibility_answer(
