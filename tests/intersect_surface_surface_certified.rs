@@ -8,12 +8,13 @@
 //! resolve are held to the promise only (never a wrong proven answer).
 
 use geocert::ops::surface_surface::{
-    intersect_surface_surface, CertifiedCurve, Options, SurfaceIntersection, SurfaceOperand,
+    intersect_surface_surface, CertifiedCurve, Options, SurfaceIntersection,
 };
 use geocert::robust::rng::Rng;
 use geocert::surface::plane::Plane;
 use geocert::surface::quadrics::{Cone, Cylinder, Paraboloid, Sphere};
 use geocert::surface::torus::Torus;
+use geocert::surface::AnySurface;
 use geocert::{Certified, Status};
 use rug::ops::Pow;
 use rug::{Float, Rational};
@@ -199,8 +200,14 @@ fn options() -> Options {
     Options::default()
 }
 
-fn run<A: SurfaceOperand, B: SurfaceOperand>(a: &A, b: &B) -> Certified<SurfaceIntersection> {
-    intersect_surface_surface(a, b, &options()).expect("valid input")
+/// Through [`AnySurface`]: the certifier is compiled once for every pair (concrete types
+/// would instantiate it once per pair of surface types — minutes of build time).
+fn run<A: Into<AnySurface> + Clone, B: Into<AnySurface> + Clone>(
+    a: &A,
+    b: &B,
+) -> Certified<SurfaceIntersection> {
+    let (a, b): (AnySurface, AnySurface) = (a.clone().into(), b.clone().into());
+    intersect_surface_surface(&a, &b, &options()).expect("valid input")
 }
 
 /// Uniform in `[0, 1)`.

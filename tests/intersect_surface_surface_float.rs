@@ -6,6 +6,7 @@ use geocert::ops::surface_surface::{
 };
 use geocert::surface::plane::Plane;
 use geocert::surface::quadrics::{Cylinder, Paraboloid, Sphere};
+use geocert::surface::AnySurface;
 
 fn methods() -> Vec<Options> {
     let mut out = Vec::new();
@@ -27,7 +28,7 @@ fn cylinder_and_plane_of_16_16_is_one_circle_of_length_2pi() {
         .with_domain(([-2.0, 2.0], [-2.0, 2.0]))
         .unwrap();
     for o in methods() {
-        let r = intersect_surface_surface_f64(&cyl, &plane, &o).unwrap();
+        let r = intersect_surface_surface_f64(&any(&cyl), &any(&plane), &o).unwrap();
         assert_eq!(
             r.curves.len(),
             1,
@@ -57,7 +58,7 @@ fn sphere_and_paraboloid_of_16_12() {
     let par = Paraboloid::new([0.0; 3], [1.0, 1.0], [0.0, 0.0, 1.0], None, [0.0, 2.0]).unwrap();
     let z = (17f64.sqrt() - 1.0) / 2.0;
     for o in methods() {
-        let r = intersect_surface_surface_f64(&sphere, &par, &o).unwrap();
+        let r = intersect_surface_surface_f64(&any(&sphere), &any(&par), &o).unwrap();
         assert_eq!(
             r.curves.len(),
             1,
@@ -107,7 +108,7 @@ fn offset_sphere_and_paraboloid_of_16_12_is_a_loop_of_length_6_6277432655() {
             DragilevForm::ParametricImplicit,
         ),
     ]) {
-        let r = intersect_surface_surface_f64(&sphere, &par, &o).unwrap();
+        let r = intersect_surface_surface_f64(&any(&sphere), &any(&par), &o).unwrap();
         assert_eq!(r.curves.len(), 1, "{:?} {form:?}", o.method);
         let c = &r.curves[0];
         assert!(c.closed);
@@ -124,4 +125,9 @@ fn offset_sphere_and_paraboloid_of_16_12_is_a_loop_of_length_6_6277432655() {
         }
     }
     let _ = CurveEnd::Boundary;
+}
+
+/// Through [`AnySurface`]: the tracer is compiled once, not once per pair of types.
+fn any<S: Into<AnySurface> + Clone>(s: &S) -> AnySurface {
+    s.clone().into()
 }

@@ -98,6 +98,23 @@ impl Surface for AnySurface {
     }
 }
 
+/// Each primitive as an [`AnySurface`]: one type for all, so that generic operations are
+/// instantiated once (`intersect_surface_surface(&a.into(), &b.into(), …)` compiles the
+/// whole certifier once, not once per pair of surface types).
+macro_rules! into_any_surface {
+    ($($t:ident => $v:ident),*) => {$(
+        impl From<$t> for AnySurface {
+            fn from(s: $t) -> AnySurface {
+                AnySurface::$v(s)
+            }
+        }
+    )*};
+}
+into_any_surface!(Plane => Plane, Sphere => Sphere, Ellipsoid => Ellipsoid,
+    Hyperboloid => Hyperboloid, Paraboloid => Paraboloid, ParaboloidRect => ParaboloidRect,
+    Cylinder => Cylinder, Cone => Cone, Torus => Torus, Bilinear => Bilinear,
+    BezierSurface => Bezier, NurbsSurface => Nurbs);
+
 impl AnySurface {
     /// The implicit form of the surface (§1.6), if it has one (not for bilinear, Bézier
     /// and NURBS patches, nor for the motion surfaces, whose implicit form depends on
