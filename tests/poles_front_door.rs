@@ -313,7 +313,7 @@ fn bezier_through(rng: &mut Rng, through: [f64; 3], scale: f64) -> TestCurve {
 }
 
 fn curve_through(rng: &mut Rng, k: usize, through: [f64; 3], scale: f64) -> TestCurve {
-    if k % 2 == 0 {
+    if k.is_multiple_of(2) {
         helix_through(rng, through, scale)
     } else {
         bezier_through(rng, through, scale)
@@ -328,7 +328,7 @@ fn pole_convention(points: &[(Value, [Float; 3])], surface_first: bool, id: &str
     let mut whole = 0;
     for (p, [_, _, v]) in points {
         let ub = &p["param_box"][s][0];
-        if ub[0].as_f64().unwrap() <= 0.0 && ub[1].as_f64().unwrap() >= 6.283185307179586 {
+        if ub[0].as_f64().unwrap() <= 0.0 && ub[1].as_f64().unwrap() >= std::f64::consts::TAU {
             whole += 1;
             assert_eq!(
                 p["params"][s][0], 0.0,
