@@ -1,8 +1,8 @@
 //! New poles for roots at a pole (issue 17 item 4, a library-level check; the front door
-//! does not use it yet): a helix through the north pole of a sphere and of an
-//! ellipsoid. On the surfaces' own parameters the certifier cannot isolate the pole
-//! root (the whole pole edge `v = π/2` maps to one point, so the system is singular
-//! along it), and `geocert solve` answers these cases `verified`, `complete: false`.
+//! uses it since issue 14 item 4, tests/poles_front_door.rs): a helix through the north
+//! pole of a sphere and of an ellipsoid. On the surfaces' own parameters the certifier
+//! cannot isolate the pole root (the whole pole edge `v = π/2` maps to one point, so the
+//! system is singular along it: `complete: false` with the root missing).
 //! On the re-parametrised surface, with new poles far from the curve, every root is
 //! `verified` and the answer `complete`; the pole root holds the true `t = 0` and the
 //! pole itself, and the way back (14.7) puts it at `v = π/2`.

@@ -25,6 +25,8 @@ mod curve_on_surface_exact;
 mod intersect_curve_surface;
 #[path = "../motion_surfaces.rs"]
 mod motion_surfaces;
+#[path = "../poles_front_door.rs"]
+mod poles_front_door;
 #[path = "../poles_repole.rs"]
 mod poles_repole;
 #[path = "../project_surface.rs"]

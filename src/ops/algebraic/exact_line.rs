@@ -17,7 +17,7 @@ pub(super) struct ExactLine<const D: usize> {
 /// negative x-axis, `π + atan2(−y, −x)`, whichever is narrower; `[−π, 0]` shifted by
 /// 2π. A box straddling the seam `t = 0` keeps its straddling enclosure ([`param`]
 /// reports it in the domain).
-pub(super) fn angle(y: &Interval, x: &Interval) -> Interval {
+pub(crate) fn angle(y: &Interval, x: &Interval) -> Interval {
     let pi = x.pi_like();
     let direct = y.atan2(x);
     let across = y.neg().atan2(&x.neg()) + pi;
@@ -41,7 +41,7 @@ fn below_zero(b: &Interval) -> bool {
 /// enclosure (the angle of the origin) stands for the whole circle. A box that
 /// straddles the seam `0` is an arc across it and stays as tight as it is (its lower
 /// end below 0 means `2π + lo`), with the estimate inside it and not below 0.
-pub(super) fn param(b: Interval) -> (f64, [f64; 2]) {
+pub(crate) fn param(b: Interval) -> (f64, [f64; 2]) {
     // 2π, enclosed (outward: `pi_like` encloses π).
     let two_pi = Interval::point(0.0).pi_like() * Interval::point(2.0);
     if b.is_empty() {

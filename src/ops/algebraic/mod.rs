@@ -25,7 +25,7 @@ mod conic_conic;
 mod conic_plane;
 pub(crate) mod curve_on_surface;
 pub(crate) mod curve_quadric;
-mod exact_line;
+pub(crate) mod exact_line;
 mod exact_spline;
 mod foot2;
 pub(crate) mod implicit_quadric;

@@ -193,15 +193,19 @@ fn curve_surface(
     let curve = curve3(curve_shape, Some(&surface_box(s)))
         .map_err(|e| e.at(&field(curve_at)))?
         .ok_or_else(|| unsupported(&field(curve_at), "expected a space curve"))?;
-    let c = intersect_curve_surface(
-        s,
-        &curve,
-        &curve_samples(&curve, opts)?,
-        &surface_nodes(s, opts)?,
-        TURN,
-        &opts.precision,
-        &opts.certify(),
-    )?;
+    // Near a pole of a sphere or ellipsoid: on a chart with new poles (§14).
+    let c = match super::poles::curve_near_poles(s, &curve, opts) {
+        Some(c) => c?,
+        None => intersect_curve_surface(
+            s,
+            &curve,
+            &curve_samples(&curve, opts)?,
+            &surface_nodes(s, opts)?,
+            TURN,
+            &opts.precision,
+            &opts.certify(),
+        )?,
+    };
     // Parameters in input order: the root is (u, v, t).
     let c = if surface_first {
         c

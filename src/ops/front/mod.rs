@@ -13,6 +13,7 @@ mod intersect;
 mod intersect_curved;
 mod intersect_surfaces;
 mod points;
+mod poles;
 mod project;
 mod project_curved;
 mod sections;
