@@ -215,7 +215,7 @@ impl Conic {
             Kind::Ellipse => Some(wrap((y.clone() / &b).atan2(&(x.clone() / &a)))),
             Kind::Hyperbola => {
                 let t = (y.clone() / &b).asinh();
-                (*x > 0 && t >= -3 && t <= 3).then_some(t)
+                (*x > 0 && (-3..=3).contains(&t)).then_some(t)
             }
             Kind::Parabola => (*y >= -1000 && *y <= 1000).then(|| y.clone()),
         }
@@ -838,7 +838,7 @@ fn quadric_against_circles_and_ellipses() {
                 continue;
             }
             let beta = -num_b / den_b;
-            let c0 = -quad(&p1) - Rational::from(&beta * wdot(&p1)) * 2u32;
+            let c0 = -quad(&p1) - (&beta * wdot(&p1)) * 2u32;
             (beta, c0)
         } else {
             let den = (wdot(&p1) - wdot(&p2)) * 2u32;
@@ -846,7 +846,7 @@ fn quadric_against_circles_and_ellipses() {
                 continue;
             }
             let beta = -(quad(&p1) - quad(&p2)) / den;
-            let c0 = -quad(&p1) - Rational::from(&beta * wdot(&p1)) * 2u32;
+            let c0 = -quad(&p1) - (&beta * wdot(&p1)) * 2u32;
             (beta, c0)
         };
         // Scale to integers.
