@@ -43,7 +43,7 @@ pub(crate) fn plane_quadric_section(a: &Shape, b: &Shape) -> Option<ExactSection
         {
             // The implicit quadric is its whole zero set: no domain trims the section.
             let plane = exact_plane(&Shape::Linear(l.clone()), "plane").ok()?;
-            let form = crate::ops::algebraic::implicit_quadric::form(q)?;
+            let form = QuadricForm::of_implicit(q)?;
             return Some(ExactSection::Section(section_plane_quadric(&plane, &form)));
         }
         _ => return None,
