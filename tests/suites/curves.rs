@@ -48,6 +48,8 @@ mod project_conic_exact;
 mod project_curve;
 #[path = "../rational_conics.rs"]
 mod rational_conics;
+#[path = "../space_conics_exact.rs"]
+mod space_conics_exact;
 #[path = "../space_pairs_exact.rs"]
 mod space_pairs_exact;
 #[path = "../spline_conic_exact.rs"]

@@ -24,9 +24,7 @@ use crate::surface::implicit::ImplicitQuadric;
 /// The exact form of the quadric; `None` only for a zero matrix, which
 /// [`ImplicitQuadric::new`] already refuses.
 pub(crate) fn form(q: &ImplicitQuadric) -> Option<QuadricForm<3>> {
-    let m = q.matrix();
-    let a = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j]));
-    QuadricForm::from_f64(a, [m[0][3], m[1][3], m[2][3]], m[3][3]).ok()
+    QuadricForm::of_implicit(q)
 }
 
 /// A line or segment against the quadric, exactly (module doc); `None` when `line` is

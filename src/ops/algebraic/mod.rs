@@ -23,6 +23,7 @@ mod conic;
 mod conic_arcs;
 mod conic_conic;
 mod conic_plane;
+pub(crate) mod coplanar;
 pub(crate) mod curve_on_surface;
 pub(crate) mod curve_quadric;
 pub(crate) mod exact_line;
@@ -38,6 +39,7 @@ pub(crate) mod pairs;
 mod params;
 pub(crate) mod quadric_feet;
 pub(crate) mod section_answer;
+pub(crate) mod space_conics;
 pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};

@@ -4,11 +4,14 @@
 
 use super::intersect_curved;
 use crate::certificate::{Arithmetic, Certified};
+use crate::curve::AnyCurve3;
 use crate::error::GeomError;
+use crate::ops::algebraic::coplanar;
 use crate::ops::algebraic::curve_on_surface as on_surface;
 use crate::ops::algebraic::curve_quadric::curve_quadric;
 use crate::ops::algebraic::implicit_quadric;
 use crate::ops::algebraic::pairs;
+use crate::ops::algebraic::space_conics;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
 use crate::ops::options::Options;
@@ -100,6 +103,15 @@ fn algebraic(
         }
         (Shape::Linear(l), Shape::Curve(c)) => pairs::curve_plane(l, c, false, deadline).map(Ok),
         (Shape::Curve(c), Shape::Linear(l)) => pairs::curve_plane(l, c, true, deadline).map(Ok),
+        (Shape::Curve(AnyCurve3::Analytic(c)), Shape::Curve(AnyCurve3::Analytic(d))) => {
+            space_conics::conic_conic3(c, d, deadline).map(Ok)
+        }
+        (Shape::Curve(AnyCurve3::Analytic(c)), Shape::Quadric(q)) => {
+            coplanar::conic_quadric(c, &implicit_quadric::form(q)?, true, deadline).map(Ok)
+        }
+        (Shape::Quadric(q), Shape::Curve(AnyCurve3::Analytic(c))) => {
+            coplanar::conic_quadric(c, &implicit_quadric::form(q)?, false, deadline).map(Ok)
+        }
         _ => pairs::plane_pair(a, b, deadline),
     }
 }

@@ -58,11 +58,17 @@ fn is_plane_shape(shape: &Shape) -> bool {
 /// Two shapes, at least one of them curved.
 pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Answer>, GeomError> {
     if let Some(i) = [a, b].iter().position(|s| matches!(s, Shape::Quadric(_))) {
+        // Lines, segments and the framed conics were answered exactly before; a plane
+        // is its exact section.
+        if let Some(r) = super::sections::pair(a, b, opts) {
+            return r;
+        }
         return Err(unsupported(
             &format!("{}.type", field(i)),
-            "an implicit `quadric` is intersected with lines and segments (exactly) in this \
-             build; against curves, planes and surfaces give it by its named type (sphere, \
-             ellipsoid, cylinder, ...)",
+            "an implicit `quadric` is intersected exactly with lines, segments, planes and \
+             the framed conics (circle, ellipse, hyperbola, and a parabola whose frame is \
+             rational) whose parameters round within the precision cap; against other \
+             curves and surfaces give it by its named type (sphere, ellipsoid, cylinder, ...)",
         ));
     }
     if is_plane_shape(a) && is_plane_shape(b) {

@@ -58,8 +58,11 @@ pub fn project(
         }),
         Shape::Quadric(_) => Err(GeomError::Unsupported {
             field: "onto.type".into(),
-            reason: "projection onto an implicit `quadric` is not implemented (give the \
-                     surface by its named type, e.g. `ellipsoid`, to project onto it)"
+            reason: "projection onto an implicit `quadric` is not implemented: the exact \
+                     feet (OPERATIONS.md §3.4) are solved in the quadric's principal axes, \
+                     which a general symmetric matrix has only with irrational directions; \
+                     give the surface by its named type (`ellipsoid`, `paraboloid`, ...) to \
+                     project onto it"
                 .into(),
         }),
     }

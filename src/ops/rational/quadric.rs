@@ -208,6 +208,15 @@ pub(crate) fn framed<const D: usize>(
 }
 
 impl QuadricForm<3> {
+    /// The exact form of the implicit `quadric` of the case format (its matrix's doubles
+    /// taken as rationals, §1.4); `None` only for a zero matrix, which
+    /// [`crate::surface::implicit::ImplicitQuadric::new`] already refuses.
+    pub fn of_implicit(q: &crate::surface::implicit::ImplicitQuadric) -> Option<Self> {
+        let m = q.matrix();
+        let a = std::array::from_fn(|i| std::array::from_fn(|j| m[i][j]));
+        QuadricForm::from_f64(a, [m[0][3], m[1][3], m[2][3]], m[3][3]).ok()
+    }
+
     /// The exact implicit form of a sphere or an ellipsoid of the model (its frame and
     /// radii taken exactly, §1.6); `None` for other surfaces or when the data give no
     /// exact form.

@@ -1,6 +1,7 @@
 //! Plane ∩ quadric at the front door's `intersect` (OPERATIONS.md §13.2): for a plane
-//! of the linear kernel and a whole sphere or ellipsoid (whose exact conic is the
-//! whole intersection, no domain trims it) the section is decided exactly first; the
+//! of the linear kernel and a whole sphere or ellipsoid, or an implicit `quadric` (whose
+//! exact conic is the whole intersection, no domain trims it) the section is decided
+//! exactly first; the
 //! front door (`ops::front::sections`) turns it into the answer. Trimmed quadrics
 //! (cylinders, hyperboloids and paraboloids with a height or range) stay with the
 //! tracer, whose answers respect the domain.
@@ -36,6 +37,14 @@ pub(crate) fn plane_quadric_section(a: &Shape, b: &Shape) -> Option<ExactSection
             if l.type_name() == "plane" =>
         {
             (exact_plane(&Shape::Linear(l.clone()), "plane").ok()?, s)
+        }
+        (Shape::Linear(l), Shape::Quadric(q)) | (Shape::Quadric(q), Shape::Linear(l))
+            if l.type_name() == "plane" =>
+        {
+            // The implicit quadric is its whole zero set: no domain trims the section.
+            let plane = exact_plane(&Shape::Linear(l.clone()), "plane").ok()?;
+            let form = QuadricForm::of_implicit(q)?;
+            return Some(ExactSection::Section(section_plane_quadric(&plane, &form)));
         }
         _ => return None,
     };
