@@ -659,11 +659,21 @@ fn bad_quadrics_are_typed_errors_naming_the_field() {
             e.field()
         );
     }
-    // Operations the quadric does not take: typed `unsupported`, naming the object.
+    // A conic against the quadric is answered exactly (a circle of radius 2 about the
+    // unit sphere's centre misses it) ...
     let sphere = diagonal_quadric([1.0; 3], [0.0; 3], 1.0);
     let circle = r#"{"type":"circle","center":[0,0,0],"radius":2,"axis":[1,0,0]}"#;
     let r = solve(&format!(
-        r#"{{"id":"u","op":"intersect","objects":[{circle},{sphere}]}}"#
+        r#"{{"id":"c","op":"intersect","objects":[{circle},{sphere}]}}"#
+    ));
+    assert!(r.error.is_none(), "{r:?}");
+    assert_eq!((r.status, r.kind), ("exact", Some("empty")), "{r:?}");
+    assert!(r.points.as_ref().is_none_or(|p| p.is_empty()), "{r:?}");
+    // ... operations the quadric does not take: typed `unsupported`, naming the object.
+    let helix =
+        r#"{"type":"helix","center":[0,0,0],"radius":2,"pitch":1,"axis":[1,0,0],"range":[0,6]}"#;
+    let r = solve(&format!(
+        r#"{{"id":"u","op":"intersect","objects":[{helix},{sphere}]}}"#
     ));
     let e = r.error.as_ref().expect("an error");
     assert_eq!(
