@@ -1,6 +1,6 @@
-//! Test suite `ssi`: answers that are curves — surface ∩ surface, three surfaces,
-//! sphere ∩ sphere, sections, contours, views, visibility, fillets. (Split from
-//! `surfaces`: one crate of both took seven minutes of CI's build on one core.)
+//! Test suite `ssi`: surface ∩ surface (certified and float) and three surfaces. (Split
+//! from `surfaces`, and `sections` from it: the crate that instantiates the certified
+//! surface ∩ surface was the last one of CI's build to finish.)
 //!
 //! One test binary per suite (Cargo.toml `[[test]]`, `autotests = false`): linking a
 //! binary per file cost most of CI's build time. Each file stays a module of its own;
@@ -12,27 +12,11 @@
 // than once, which clippy flags.
 #![allow(clippy::duplicate_mod)]
 
-#[path = "../contour.rs"]
-mod contour;
-#[path = "../fillet.rs"]
-mod fillet;
-#[path = "../fillet_curved.rs"]
-mod fillet_curved;
-#[path = "../fillet_variable.rs"]
-mod fillet_variable;
-#[path = "../intersect_sphere_sphere_exact.rs"]
-mod intersect_sphere_sphere_exact;
 #[path = "../intersect_surface_surface_certified.rs"]
 mod intersect_surface_surface_certified;
 #[path = "../intersect_surface_surface_float.rs"]
 mod intersect_surface_surface_float;
 #[path = "../intersect_three_surfaces.rs"]
 mod intersect_three_surfaces;
-#[path = "../section.rs"]
-mod section;
 #[path = "../ssi_families.rs"]
 mod ssi_families;
-#[path = "../views.rs"]
-mod views;
-#[path = "../visibility.rs"]
-mod visibility;
