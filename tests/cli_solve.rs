@@ -7,6 +7,8 @@ use std::process::Command;
 
 mod cli_support;
 
+use cli_support::f64s;
+
 /// Run `geocert solve -` on the given lines (with one and three threads: the same
 /// bytes, [`cli_support::run`]); the results and the exit code.
 fn solve(lines: &[Value]) -> (Vec<Value>, i32) {
@@ -18,14 +20,6 @@ fn solve_one(case: Value) -> Value {
     let (mut r, _) = solve(&[case]);
     assert_eq!(r.len(), 1);
     r.remove(0)
-}
-
-fn f64s(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect()
 }
 
 #[test]

@@ -12,6 +12,9 @@
 //! status, the kind and count, coordinates and parameters equal to the correctly rounded
 //! truth and held by their boxes, multiplicities and tangency.
 
+mod cli_support;
+
+use cli_support::f64s;
 use geocert::io::{read_cases, solve_case};
 use geocert::num::rng::Rng;
 use rug::float::{Constant, Round};
@@ -32,14 +35,6 @@ fn fl(x: &Rational) -> Float {
 
 fn nearest(x: &Float) -> f64 {
     Float::with_val_round(53, x, Round::Nearest).0.to_f64()
-}
-
-fn f64s(v: &Value) -> Vec<f64> {
-    v.as_array()
-        .unwrap()
-        .iter()
-        .map(|x| x.as_f64().unwrap())
-        .collect()
 }
 
 /// `v` is the correctly rounded `x` and `b` holds `x`, up to the truth's own error:

@@ -61,3 +61,12 @@ pub fn solve_text(text: &str) -> (Vec<serde_json::Value>, i32) {
     let out = run("solve", &[], text.as_bytes());
     (json_lines(&out), out.status.code().unwrap_or(-1))
 }
+
+/// The numbers of a JSON array (a result's `xyz`, `params`, a box's bounds).
+pub fn f64s(v: &serde_json::Value) -> Vec<f64> {
+    v.as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_f64().unwrap())
+        .collect()
+}
