@@ -38,16 +38,18 @@ impl From<GeomError> for BuildError {
 
 /// A coordinate type that case numbers convert into exactly.
 trait FromNum: Coord + Sized {
-    fn from_num(n: &Num, field: &str) -> Result<Self, BuildError>;
+    /// `field` names the number in an error (built only then: this runs for every
+    /// coordinate of every case).
+    fn from_num(n: &Num, field: &dyn Fn() -> String) -> Result<Self, BuildError>;
 }
 
 impl FromNum for f64 {
     /// A double as is; a string only when its exact value is a double.
-    fn from_num(n: &Num, field: &str) -> Result<f64, BuildError> {
+    fn from_num(n: &Num, field: &dyn Fn() -> String) -> Result<f64, BuildError> {
         match n {
             Num::Double(v) => Ok(*v),
             Num::Text(t) => {
-                let q = parse_rational(field, t)?;
+                let q = parse_rational(&field(), t)?;
                 let r = round_rational(&q);
                 if r.is_exact() && !r.overflowed() {
                     Ok(r.nearest)
@@ -60,10 +62,10 @@ impl FromNum for f64 {
 }
 
 impl FromNum for Rational {
-    fn from_num(n: &Num, field: &str) -> Result<Rational, BuildError> {
+    fn from_num(n: &Num, field: &dyn Fn() -> String) -> Result<Rational, BuildError> {
         match n {
-            Num::Double(v) => Ok(crate::num::parse::rational_from_f64(field, *v)?),
-            Num::Text(t) => Ok(parse_rational(field, t)?),
+            Num::Double(v) => Ok(crate::num::parse::rational_from_f64(&field(), *v)?),
+            Num::Text(t) => Ok(parse_rational(&field(), t)?),
         }
     }
 }
@@ -76,12 +78,12 @@ fn vec3<T: FromNum>(v: &[Num], field: &str) -> Result<Vector3<T>, BuildError> {
         }
         .into());
     }
-    let c = |i: usize| T::from_num(&v[i], &format!("{field}[{i}]"));
+    let c = |i: usize| T::from_num(&v[i], &|| format!("{field}[{i}]"));
     Ok(Vector3::new(c(0)?, c(1)?, c(2)?))
 }
 
 fn vec2<T: FromNum>(v: &[Num; 2], field: &str) -> Result<Vector2<T>, BuildError> {
-    let c = |i: usize| T::from_num(&v[i], &format!("{field}[{i}]"));
+    let c = |i: usize| T::from_num(&v[i], &|| format!("{field}[{i}]"));
     Ok(Vector2::new(c(0)?, c(1)?))
 }
 
@@ -89,8 +91,8 @@ fn range<T: FromNum>(r: &Option<[Num; 2]>, field: &str) -> Result<Option<[T; 2]>
     r.as_ref()
         .map(|[a, b]| {
             Ok([
-                T::from_num(a, &format!("{field}[0]"))?,
-                T::from_num(b, &format!("{field}[1]"))?,
+                T::from_num(a, &|| format!("{field}[0]"))?,
+                T::from_num(b, &|| format!("{field}[1]"))?,
             ])
         })
         .transpose()
@@ -126,7 +128,7 @@ pub fn position(v: &[Num], field: &str) -> Result<Position, GeomError> {
     let doubles: Result<Vec<f64>, BuildError> = v
         .iter()
         .enumerate()
-        .map(|(i, n)| f64::from_num(n, &format!("{field}[{i}]")))
+        .map(|(i, n)| f64::from_num(n, &|| format!("{field}[{i}]")))
         .collect();
     match doubles {
         Ok(d) => Ok(Position::Double(d)),
@@ -135,7 +137,7 @@ pub fn position(v: &[Num], field: &str) -> Result<Position, GeomError> {
             .iter()
             .enumerate()
             .map(
-                |(i, n)| match Rational::from_num(n, &format!("{field}[{i}]")) {
+                |(i, n)| match Rational::from_num(n, &|| format!("{field}[{i}]")) {
                     Ok(q) => Ok(q),
                     Err(BuildError::Geom(e)) => Err(e),
                     Err(BuildError::NeedsRational) => Err(unreachable_rational()),
@@ -237,7 +239,7 @@ fn plane<T: FromNum>(p: &PlaneSpec) -> Result<Plane<T>, BuildError> {
             let d = p.d.as_ref().ok_or_else(|| missing("d", "implicit"))?;
             Ok(Plane::implicit(
                 vec3(normal, "normal")?,
-                T::from_num(d, "d")?,
+                T::from_num(d, &|| "d".into())?,
             )?)
         }
         (false, false) => Err(GeomError::Format {
@@ -257,7 +259,8 @@ fn through_points<T: FromNum>(points: &[[Num; 3]; 3]) -> Result<Plane<T>, BuildE
         exact[i] = [v[0].clone(), v[1].clone(), v[2].clone()];
     }
     let plane = crate::ops::section::plane_through_points_exact(&exact)?;
-    let as_t = |q: &Rational, field: &str| T::from_num(&Num::Text(q.to_string()), field);
+    let as_t =
+        |q: &Rational, field: &str| T::from_num(&Num::Text(q.to_string()), &|| field.to_string());
     let n = &plane.normal;
     Ok(Plane::implicit(
         Vector3::new(

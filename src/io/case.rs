@@ -2,6 +2,7 @@
 //! turning each into a typed [`Case`], or an error naming the offending field.
 
 use super::de::deserialize_at;
+use super::fast::read_quick;
 use super::lenient::salvage;
 use super::number::{abbreviate, shortest, Double, Num};
 use super::objects::{parse_object, ObjectSpec};
@@ -197,14 +198,7 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
             .collect::<Result<Vec<_>, _>>()?;
         let onto = raw.onto.map(|v| parse_object(v, "onto")).transpose()?;
         let shell = raw.shell.map(|v| parse_object(v, "shell")).transpose()?;
-        if let Some(Double(t)) = raw.options.time_limit {
-            if t.is_nan() || t <= 0.0 {
-                return Err(GeomError::InvalidValue {
-                    field: "options.time_limit".into(),
-                    reason: format!("{} is not a positive number of seconds", shortest(t)),
-                });
-            }
-        }
+        check_options(&raw.options)?;
         Ok(Case {
             id: raw.id,
             op: raw.op,
@@ -229,6 +223,17 @@ pub fn parse_case(value: serde_json::Value) -> ReadCase {
         })
     });
     ReadCase { id, case }
+}
+
+/// What `options` must satisfy beyond their types: a positive `time_limit`.
+pub(super) fn check_options(options: &Options) -> Result<(), GeomError> {
+    match options.time_limit {
+        Some(Double(t)) if t.is_nan() || t <= 0.0 => Err(GeomError::InvalidValue {
+            field: "options.time_limit".into(),
+            reason: format!("{} is not a positive number of seconds", shortest(t)),
+        }),
+        _ => Ok(()),
+    }
 }
 
 /// serde reports a missing required field at the path of the object that lacks it;
@@ -326,6 +331,12 @@ pub fn read_chunk(chunk: &Chunk) -> Record {
             return record(chunk, id, raw, Err(format_error(line_field(), message)));
         }
     };
+    read_quick(text, chunk.line).unwrap_or_else(|| read_careful(text, chunk))
+}
+
+/// The careful road of [`read_chunk`]: strict JSON, then the case format with every
+/// error naming its field (the quick road, [`super::fast`], only ever accepts).
+pub(super) fn read_careful(text: &str, chunk: &Chunk) -> Record {
     match parse_strict(text) {
         Ok(Parsed { value, raw_id }) => {
             let raw = raw_id.map(|r| r.get().to_string()).filter(|r| is_number(r));

@@ -6,6 +6,7 @@ mod blend_law;
 mod build;
 pub mod case;
 mod de;
+mod fast;
 pub mod lenient;
 pub mod number;
 pub mod objects;
