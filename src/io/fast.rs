@@ -1,6 +1,6 @@
 //! The quick road for the common case (issue 19: 10⁶ linear cases in seconds): a case
-//! whose objects are all linear (`line`, `segment`, an unbounded `plane`, `line2`,
-//! `segment2`) and whose other fields are plain numbers is read straight from its text
+//! whose objects (and `onto`) are all linear (`line`, `segment`, an unbounded `plane`,
+//! `line2`, `segment2`) and whose other fields are plain numbers is read straight from its text
 //! into the typed [`Case`], without building a `serde_json::Value` and without tracking
 //! field paths.
 //!
@@ -35,6 +35,7 @@ struct QuickCase<'a> {
     #[serde(default)]
     objects: Vec<QuickObject>,
     point: Option<Vec<Num>>,
+    onto: Option<QuickObject>,
     direction: Option<Vec<Num>>,
     #[serde(default)]
     nearest: bool,
@@ -180,7 +181,7 @@ pub(super) fn read_quick(text: &str, line: usize) -> Option<Record> {
         op: quick.op,
         objects: quick.objects.into_iter().map(ObjectSpec::from).collect(),
         point: quick.point,
-        onto: None,
+        onto: quick.onto.map(ObjectSpec::from),
         direction: quick.direction,
         nearest: quick.nearest,
         shell: None,
@@ -257,6 +258,8 @@ mod tests {
             format!(r#"{{"id": 7, "op": "intersect", "objects": [{objects}]{extra}}}"#)
         };
         assert!(agree(&case(&format!("{line}, {plane}"), "")));
+        let project = format!(r#"{{"op": "project", "point": [1, "2", 3], "onto": {plane}}}"#);
+        assert!(agree(&project));
         assert!(agree(&case(
             &format!("{line}, {plane}"),
             r#", "options": {"exact": true, "time_limit": 2}"#
