@@ -45,7 +45,11 @@ fn same_way_rays_answer_the_later_ray() {
     let r = solve_one(json!({"id": 2, "op": "intersect", "objects": [a, b],
                              "options": {"exact": true}}));
     assert_eq!(r["ray"]["exact"]["dir"], json!(["2", "0", "0"]), "{r}");
-    assert_eq!(r["ray"]["start"]["exact"]["xyz"], json!(["4", "0", "0"]), "{r}");
+    assert_eq!(
+        r["ray"]["start"]["exact"]["xyz"],
+        json!(["4", "0", "0"]),
+        "{r}"
+    );
 }
 
 /// A ray `t ≤ 1` against the x-axis reversed: the ray from x = 1 towards −x, the second

@@ -263,7 +263,13 @@ fn common(a: &Obj, b: &Obj, k: &Rational, m: &Rational) -> [Option<Rational>; 2]
 /// An object on the carrier `o + t₁·d` with its own parametrisation `t₁ = k + m·t`
 /// (`o + k·d`, `m·d`), kind as in [`ends_around`] (4: a segment from `t₁ = k` to
 /// `k + m`), its ends around `t₁ = c` mapped to its own parameter.
-fn on_carrier(rng: &mut Rng, o: [f64; 3], d: [f64; 3], c: i64, kind: usize) -> (Obj, Rational, Rational) {
+fn on_carrier(
+    rng: &mut Rng,
+    o: [f64; 3],
+    d: [f64; 3],
+    c: i64,
+    kind: usize,
+) -> (Obj, Rational, Rational) {
     let m = [1.0, -1.0, 2.0, -2.0, 0.5, -0.5][rng.below(6)];
     let k = (c + rng.int(-2, 2)) as f64;
     let own_o = std::array::from_fn(|i| o[i] + k * d[i]);
@@ -336,7 +342,8 @@ fn collinear_rays_in_every_pairing() {
                 let (x, t2) = end(t);
                 check_point(&ray.start, &x, [Some(t), Some(&t2)], &what);
                 let sign = if up { 1 } else { -1 };
-                let truth: Vec<Rational> = a.dq().iter().map(|v| Rational::from(v * sign)).collect();
+                let truth: Vec<Rational> =
+                    a.dq().iter().map(|v| Rational::from(v * sign)).collect();
                 let rounded: Vec<f64> = truth.iter().map(nearest).collect();
                 assert_eq!(ray.dir, rounded, "{what}: dir");
                 assert_eq!(
@@ -397,7 +404,9 @@ fn rays_against_planes() {
         if n.iter().all(|x| *x == 0) {
             continue;
         }
-        let plane: Shape = Plane::parametric(v3(p), v3(u), v3(v)).expect("plane").into();
+        let plane: Shape = Plane::parametric(v3(p), v3(u), v3(v))
+            .expect("plane")
+            .into();
         let lying = case % 4 == 0;
         let d = if lying {
             let (a, b) = (rng.int(-2, 2) as f64, rng.int(-2, 2) as f64);
@@ -469,7 +478,13 @@ fn rays_against_planes() {
             (e, other) => panic!("{what}: ends {e:?}, answered {other:?}"),
         }
     }
-    for k in ["points/", "empty/outside_domain", "ray/", "segment/", "line/"] {
+    for k in [
+        "points/",
+        "empty/outside_domain",
+        "ray/",
+        "segment/",
+        "line/",
+    ] {
         assert!(kinds.get(k).is_some_and(|&n| n > 10), "{k}: {kinds:?}");
     }
 }

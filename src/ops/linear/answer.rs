@@ -121,14 +121,29 @@ fn slots<X>(mine: X, line_first: bool) -> Vec<Option<X>> {
 
 /// A ray of an answer from its start, along `d` or (`forward` false) `−d`, with the
 /// inputs' parameter directions.
-fn ray(start: Point, d: &Vector3<Rational>, forward: bool, increasing: Vec<Option<bool>>, keep: bool) -> Answer {
+fn ray(
+    start: Point,
+    d: &Vector3<Rational>,
+    forward: bool,
+    increasing: Vec<Option<bool>>,
+    keep: bool,
+) -> Answer {
     let dir: Vec<Rational> = d
         .iter()
-        .map(|x| if forward { x.clone() } else { Rational::from(-x) })
+        .map(|x| {
+            if forward {
+                x.clone()
+            } else {
+                Rational::from(-x)
+            }
+        })
         .collect();
     Answer::Ray(RayAnswer {
         start,
-        dir: dir.iter().map(|x| Q::rational(x, false).r.nearest).collect(),
+        dir: dir
+            .iter()
+            .map(|x| Q::rational(x, false).r.nearest)
+            .collect(),
         increasing,
         exact_dir: keep.then_some(dir),
     })
