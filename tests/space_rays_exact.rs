@@ -50,8 +50,8 @@ fn check_rational(v: f64, b: [f64; 2], x: &Rational, what: &str) {
 /// A point against its truth: coordinates and the parameter on each input (`None`:
 /// the input has no parameter).
 fn check_point(p: &Point, xyz: &[Rational; 3], params: [Option<&Rational>; 2], what: &str) {
-    for i in 0..3 {
-        check_rational(p.xyz[i], p.xyz_box[i], &xyz[i], &format!("{what} xyz[{i}]"));
+    for (i, x) in xyz.iter().enumerate() {
+        check_rational(p.xyz[i], p.xyz_box[i], x, &format!("{what} xyz[{i}]"));
     }
     let boxes = p.param_box.as_ref().expect("param boxes");
     for (k, t) in params.iter().enumerate() {
@@ -244,7 +244,7 @@ fn crossing_rays_in_every_pairing() {
 /// The truth of two collinear objects: the second's parameter `t₂` is `t₁ = k + m·t₂`
 /// on the first's; the common part in `t₁` between `lo` and `hi` (`None`: infinite).
 fn common(a: &Obj, b: &Obj, k: &Rational, m: &Rational) -> [Option<Rational>; 2] {
-    let map = |t: Option<f64>| t.map(|t| Rational::from(k + Rational::from(m * q(t))));
+    let map = |t: Option<f64>| t.map(|t| k + m * q(t));
     let (mut lo2, mut hi2) = (map(b.ends[0]), map(b.ends[1]));
     if *m < 0 {
         std::mem::swap(&mut lo2, &mut hi2);
@@ -438,9 +438,8 @@ fn rays_against_planes() {
         };
         let check = |pt: &Point, t: &Rational| {
             let s = slot(t);
-            let x = obj.at(t);
-            for i in 0..3 {
-                check_rational(pt.xyz[i], pt.xyz_box[i], &x[i], &what);
+            for (i, x) in obj.at(t).iter().enumerate() {
+                check_rational(pt.xyz[i], pt.xyz_box[i], x, &what);
             }
             let k = usize::from(!first);
             let b = pt.param_box.as_ref().expect("boxes");
