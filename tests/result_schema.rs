@@ -327,6 +327,28 @@ fn section_records_fit_the_schema() {
     }
 }
 
+/// Records of kind `ray` (collinear rays, a ray in a plane, exact values on request)
+/// fit, and a `ray` record without its `ray` field, or a `ray` field on another kind,
+/// does not.
+#[test]
+fn ray_records_fit_the_schema() {
+    let (schemas, index) = schema();
+    let cases = [
+        r#"{"op": "intersect", "objects": [{"type": "line", "origin": [0,0,0], "dir": [1,0,0], "range": [0, null]}, {"type": "line", "origin": [2,0,0], "dir": [3,0,0], "range": [null, null]}]}"#,
+        r#"{"op": "intersect", "objects": [{"type": "plane", "normal": [0,0,1], "d": 0}, {"type": "line", "origin": [0,0,0], "dir": [1,2,0], "range": [null, "1/3"]}], "options": {"exact": true}}"#,
+    ];
+    for case in cases {
+        let mut read = geocert::io::read_cases(case);
+        let r = serde_json::to_value(geocert::io::solve_case(read.remove(0))).unwrap();
+        assert_eq!(r["kind"], "ray", "{r}");
+        assert!(schemas.validate(&r, index).is_ok(), "{r}");
+        let bare = mutated(&r, |r| drop(r.as_object_mut().unwrap().remove("ray")));
+        assert!(schemas.validate(&bare, index).is_err(), "{bare}");
+        let other = mutated(&r, |r| r["kind"] = json!("segment"));
+        assert!(schemas.validate(&other, index).is_err(), "{other}");
+    }
+}
+
 #[test]
 fn blend_records_fit_the_schema() {
     let (schemas, index) = schema();

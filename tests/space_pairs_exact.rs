@@ -377,13 +377,22 @@ fn collinear_and_parallel_objects() {
         assert_exact(&r, &what);
         assert!(matches!(r.value, Answer::Coincident), "{what}: {r:?}");
         // Two rays along the carrier: opposite and overlapping → a segment; the same
-        // way → a ray, which the answer has no kind for (typed refusal).
+        // way → the later ray (kind `ray`, from p1 along d; tests/space_rays_exact.rs
+        // checks rays in every pairing).
         let (p0, p1) = (at(o, d, lo1), at(o, d, hi1));
         let r = run(&ray(p0, d), &ray(p1, d.map(|v| -v)), exact).unwrap();
         assert_exact(&r, &what);
         assert!(matches!(r.value, Answer::Segment(_)), "{what}: {r:?}");
-        let e = run(&ray(p0, d), &ray(p1, d), exact).unwrap_err();
-        assert!(matches!(e, GeomError::Unsupported { .. }), "{what}: {e:?}");
+        let r = run(&ray(p0, d), &ray(p1, d), exact).unwrap();
+        assert_exact(&r, &what);
+        match &r.value {
+            Answer::Ray(ray) => {
+                assert_eq!(ray.dir, d.to_vec(), "{what}");
+                assert_eq!(ray.increasing, vec![Some(true), Some(true)], "{what}");
+                assert_eq!(ray.start.params[1], vec![0.0], "{what}: from p1");
+            }
+            other => panic!("{what}: {other:?}"),
+        }
     }
     assert!(
         kinds.iter().all(|&c| c > 20),

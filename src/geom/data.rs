@@ -53,12 +53,22 @@ pub(crate) fn lift2<T: Lift<R>, R>(v: &Vector2<T>) -> V2<R> {
     [v[0].lift(), v[1].lift()]
 }
 
-/// A 3D line in a ring: `o + t·d`, `t ∈ range` (closed) or unbounded.
+/// A 3D line in a ring: `o + t·d`, `t` between the two `ends` (`None`: that end is
+/// infinite, so `[None, None]` is the whole line and one `None` a ray).
 #[derive(Debug, Clone)]
 pub(crate) struct LineData<R> {
     pub o: V3<R>,
     pub d: V3<R>,
-    pub range: Option<[R; 2]>,
+    pub ends: [Option<R>; 2],
+}
+
+impl<R: Field> LineData<R> {
+    /// Whether `t` lies in the domain (both ends closed).
+    pub(crate) fn contains(&self, t: &R) -> bool {
+        let [lo, hi] = &self.ends;
+        lo.as_ref().is_none_or(|a| t.compare(a).is_ge())
+            && hi.as_ref().is_none_or(|b| t.compare(b).is_le())
+    }
 }
 
 /// A 2D line in a ring.
@@ -104,13 +114,38 @@ impl<'a, T: Coord> Linear<'a, T> {
         T: Lift<R>,
     {
         match self {
-            Linear::Line(l) => LineData {
-                o: lift3(l.origin()),
-                d: lift3(l.dir()),
-                range: l.range().map(|[a, b]| [a.lift(), b.lift()]),
-            },
+            Linear::Line(l) => {
+                let (lo, hi) = l.bounds();
+                LineData {
+                    o: lift3(l.origin()),
+                    d: lift3(l.dir()),
+                    ends: [lo.map(Lift::lift), hi.map(Lift::lift)],
+                }
+            }
             Linear::Segment(s) => LineData::segment(lift3(s.a()), lift3(s.b())),
         }
+    }
+}
+
+impl Linear<'_, f64> {
+    /// The ends of the parameter domain as doubles, `None` for an infinite end (a ray's
+    /// open end, both ends of a line; a segment's are `0`, `1`).
+    pub(crate) fn ends_f64(&self) -> [Option<f64>; 2] {
+        match self {
+            Linear::Line(l) => {
+                let (lo, hi) = l.bounds();
+                [lo.copied(), hi.copied()]
+            }
+            Linear::Segment(_) => [Some(0.0), Some(1.0)],
+        }
+    }
+
+    /// Whether the exact value of `t` lies in the domain, decided on its enclosure:
+    /// the domain's ends are doubles, so comparing `t` with them is exact.
+    pub(crate) fn bounds_contain(&self, t: &crate::num::round::Rounded) -> bool {
+        let [lo, hi] = self.ends_f64();
+        lo.is_none_or(|lo| t.compare_f64(lo).is_ge())
+            && hi.is_none_or(|hi| t.compare_f64(hi).is_le())
     }
 }
 
@@ -119,10 +154,11 @@ impl<R: Ring> LineData<R> {
     #[inline(always)]
     pub(crate) fn segment(a: V3<R>, b: V3<R>) -> Self {
         let d = sub3(&b, &a);
+        let [zero, one] = unit_range();
         LineData {
             o: a,
             d,
-            range: Some(unit_range()),
+            ends: [Some(zero), Some(one)],
         }
     }
 }

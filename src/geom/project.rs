@@ -133,9 +133,9 @@ pub(crate) fn line_core<R: Field>(p: &V3<R>, l: &LineData<R>) -> LineProjection<
         t: t.clone(),
         distance: tm.dist2num.divide(&tm.dd),
     };
-    let clamp = match &l.range {
-        Some([a, _]) if t.compare(a).is_lt() => Some(a.clone()),
-        Some([_, b]) if t.compare(b).is_gt() => Some(b.clone()),
+    let clamp = match &l.ends {
+        [Some(a), _] if t.compare(a).is_lt() => Some(a.clone()),
+        [_, Some(b)] if t.compare(b).is_gt() => Some(b.clone()),
         _ => None,
     };
     match clamp {
@@ -416,12 +416,7 @@ fn fast_line<M: ProductMode>(
     let e_dd = bound(EPS_L[1], &[ml, ml]);
     let dd = Denominator::new(&tm.dd, e_dd)?;
     let t = round_over(&tm.tnum, bound(EPS_L[0], &[mp, ml]), &dd)?;
-    let inside = match line {
-        Linear::Line(l) => l
-            .range()
-            .is_none_or(|[a, b]| t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le()),
-        Linear::Segment(_) => t.compare_f64(0.0).is_ge() && t.compare_f64(1.0).is_le(),
-    };
+    let inside = line.bounds_contain(&t);
     if !inside {
         return None;
     }
@@ -513,7 +508,7 @@ mod tests {
                 &LineData {
                     o: [i; 3],
                     d,
-                    range: None,
+                    ends: [None, None],
                 },
             );
             let all = [

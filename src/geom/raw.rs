@@ -176,7 +176,7 @@ impl<F: Lane> MixedLines<F> {
         LineData {
             o,
             d: each!(k in [0, 1, 2] => Dd::select(self.segment, &ba[k], &d[k])),
-            range: None,
+            ends: [None, None],
         }
     }
 }
@@ -199,7 +199,7 @@ impl<F: Lane> RawLine<F> {
             RawLine::Line { o, d } => LineData {
                 o: lift3(o),
                 d: lift3(d),
-                range: None,
+                ends: [None, None],
             },
             RawLine::Segment { a, b } => LineData::segment(lift3(a), lift3(b)),
             RawLine::Mixed(m, _) => m.data(),

@@ -11,7 +11,8 @@ use rug::Rational;
 use super::blend_law::law_json;
 use super::result::{
     BlendOut, CaseResult, ComponentOut, CurveEndOut, CurveOut, CurveVertexOut, ExactLineOut,
-    ExactOut, GridOut, LineOut, ParamLineOut, PointOut, SegmentOut, SingularPointOut,
+    ExactOut, ExactRayOut, GridOut, LineOut, ParamLineOut, PointOut, RayOut, SegmentOut,
+    SingularPointOut,
 };
 use crate::certificate::Certified;
 use crate::ops::{
@@ -153,6 +154,17 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
             r.segment = Some(SegmentOut {
                 a: point(&s.a),
                 b: point(&s.b),
+            })
+        }
+        Answer::Ray(ray) => {
+            r.ray = Some(RayOut {
+                start: point(&ray.start),
+                dir: ray.dir.clone(),
+                increasing: ray.increasing.clone(),
+                exact: ray
+                    .exact_dir
+                    .as_ref()
+                    .map(|d| ExactRayOut { dir: texts(d) }),
             })
         }
         Answer::Side(_, nearest) => r.points = nearest.as_ref().map(|p| vec![point(p)]),

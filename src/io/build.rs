@@ -15,7 +15,7 @@ use super::objects::{
 };
 use super::shapes::PlaneShape;
 use crate::error::GeomError;
-use crate::geom::{Coord, Line, Line2, Plane, Segment, Segment2};
+use crate::geom::{Coord, Line, Line2, ParamRange, Plane, Segment, Segment2};
 use crate::num::parse::parse_rational;
 use crate::num::round::round_rational;
 use crate::ops::{Linear, LinearObject, Polyhedron, Position, Shape};
@@ -87,15 +87,45 @@ fn vec2<T: FromNum>(v: &[Num; 2], field: &str) -> Result<Vector2<T>, BuildError>
     Ok(Vector2::new(c(0)?, c(1)?))
 }
 
-fn range<T: FromNum>(r: &Option<[Num; 2]>, field: &str) -> Result<Option<[T; 2]>, BuildError> {
-    r.as_ref()
-        .map(|[a, b]| {
-            Ok([
-                T::from_num(a, &|| format!("{field}[0]"))?,
-                T::from_num(b, &|| format!("{field}[1]"))?,
-            ])
-        })
-        .transpose()
+/// A line's `range`: closed `[t0, t1]`, one-sided with `null` for the infinite end (a
+/// ray), or `[null, null]`, the whole line (as no `range`).
+fn range<T: FromNum>(
+    r: &Option<[Option<Num>; 2]>,
+    field: &str,
+) -> Result<Option<ParamRange<T>>, BuildError> {
+    let end = |n: &Option<Num>, i: usize| {
+        n.as_ref()
+            .map(|n| T::from_num(n, &|| format!("{field}[{i}]")))
+            .transpose()
+    };
+    let Some([a, b]) = r else {
+        return Ok(None);
+    };
+    Ok(match (end(a, 0)?, end(b, 1)?) {
+        (Some(lo), Some(hi)) => Some(ParamRange::Closed([lo, hi])),
+        (Some(lo), None) => Some(ParamRange::AtLeast(lo)),
+        (None, Some(hi)) => Some(ParamRange::AtMost(hi)),
+        (None, None) => None,
+    })
+}
+
+/// A `line2`'s `range`: as [`range`], but a ray in the plane is refused (`unsupported`,
+/// naming `range`): the 2D kernels take closed ranges only.
+fn closed_range<T: FromNum>(
+    r: &Option<[Option<Num>; 2]>,
+    field: &str,
+) -> Result<Option<ParamRange<T>>, BuildError> {
+    let r = range(r, field)?;
+    if matches!(r, Some(ParamRange::AtLeast(_) | ParamRange::AtMost(_))) {
+        return Err(GeomError::Unsupported {
+            field: field.into(),
+            reason: "a ray in the plane (a `line2` range with a null end) is not \
+                     implemented in this build; give both ends"
+                .into(),
+        }
+        .into());
+    }
+    Ok(r)
 }
 
 /// One object of a case as a shape; errors name fields below `prefix`.
@@ -154,7 +184,7 @@ fn linear_object<T: FromNum>(spec: &ObjectSpec) -> Result<LinearObject<T>, Build
             origin,
             dir,
             range: r,
-        }) => LinearObject::Line(Line::with_range(
+        }) => LinearObject::Line(Line::with_param_range(
             vec3(origin, "origin")?,
             vec3(dir, "dir")?,
             range(r, "range")?,
@@ -167,10 +197,10 @@ fn linear_object<T: FromNum>(spec: &ObjectSpec) -> Result<LinearObject<T>, Build
             origin,
             dir,
             range: r,
-        }) => LinearObject::Line2(Line2::with_range(
+        }) => LinearObject::Line2(Line2::with_param_range(
             vec2(origin, "origin")?,
             vec2(dir, "dir")?,
-            range(r, "range")?,
+            closed_range(r, "range")?,
         )?),
         ObjectSpec::Segment2(Segment2Spec { a, b }) => {
             LinearObject::Segment2(Segment2::new(vec2(a, "a")?, vec2(b, "b")?)?)

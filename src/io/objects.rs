@@ -7,14 +7,15 @@ use super::number::Num;
 use crate::error::GeomError;
 use serde::Deserialize;
 
-/// `line`: `c(t) = origin + t·dir`, t ∈ ℝ or `range` (alias `domain`).
+/// `line`: `c(t) = origin + t·dir`, t ∈ ℝ or `range` (alias `domain`); an end written
+/// `null` is infinite, so `[t0, null]` and `[null, t1]` are rays (docs/FORMAT.md).
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct LineSpec {
     pub origin: [Num; 3],
     pub dir: [Num; 3],
     #[serde(alias = "domain")]
-    pub range: Option<[Num; 2]>,
+    pub range: Option<[Option<Num>; 2]>,
 }
 
 /// `segment`: `c(t) = (1−t)·a + t·b`, t ∈ [0, 1].
@@ -39,14 +40,14 @@ pub struct PlaneSpec {
     pub points: Option<[[Num; 3]; 3]>,
 }
 
-/// `line2`: `origin + t·dir` in the plane.
+/// `line2`: `origin + t·dir` in the plane; `range` as for `line`.
 #[derive(Debug, Clone, PartialEq, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct Line2Spec {
     pub origin: [Num; 2],
     pub dir: [Num; 2],
     #[serde(alias = "domain")]
-    pub range: Option<[Num; 2]>,
+    pub range: Option<[Option<Num>; 2]>,
 }
 
 /// `segment2`: `(1−t)·a + t·b` in the plane.

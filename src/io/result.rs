@@ -93,6 +93,26 @@ pub struct SegmentOut {
     pub b: PointOut,
 }
 
+/// `ray` of a result: the points `start + s·dir`, `s ≥ 0` (collinear objects
+/// overlapping in a ray, a ray lying in a plane).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct RayOut {
+    pub start: PointOut,
+    #[serde(serialize_with = "doubles")]
+    pub dir: Vec<f64>,
+    /// For each input object in input order: whether its parameter grows along the
+    /// ray (`null` for objects without one parameter).
+    pub increasing: Vec<Option<bool>>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub exact: Option<ExactRayOut>,
+}
+
+/// Exact rationals of a ray's direction (its start's are in `start.exact`).
+#[derive(Debug, Clone, PartialEq, Serialize)]
+pub struct ExactRayOut {
+    pub dir: Vec<String>,
+}
+
 /// How one end of a curve ends (`ends[]` of `curves[]`): `closed`, `boundary` (a
 /// domain edge), `singular` (at `singular_points[index]`), `tangency` or `unfinished`
 /// (float trace only).
@@ -226,6 +246,8 @@ pub struct CaseResult {
     pub line: Option<LineOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub segment: Option<SegmentOut>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub ray: Option<RayOut>,
     /// Kind `curves`: the intersection curves.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub curves: Option<Vec<CurveOut>>,
@@ -285,6 +307,7 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            ray: None,
             curves: None,
             singular_points: None,
             conic: None,
@@ -316,6 +339,7 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            ray: None,
             curves: None,
             singular_points: None,
             conic: None,

@@ -34,9 +34,10 @@ struct ClaimIn {
     #[serde(default)]
     points: Vec<ClaimPoint>,
     tolerance: Option<Double>,
-    /// Claimed curves, lines and segments: not yet checked (reported `undecided`).
+    /// Claimed curves, lines, segments and rays: not yet checked (reported `undecided`).
     line: Option<serde_json::Value>,
     segment: Option<serde_json::Value>,
+    ray: Option<serde_json::Value>,
     curves: Option<serde_json::Value>,
     // Result-format fields that take no part in the comparison.
     #[serde(default, rename = "id")]
@@ -232,6 +233,7 @@ fn read_claim(value: serde_json::Value, fallback: Option<Double>) -> Result<Clai
     let unchecked = [
         ("line", claim.line.is_some()),
         ("segment", claim.segment.is_some()),
+        ("ray", claim.ray.is_some()),
         ("curves", claim.curves.is_some()),
     ]
     .into_iter()

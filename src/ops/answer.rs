@@ -78,6 +78,22 @@ pub struct SegmentAnswer {
     pub b: Point,
 }
 
+/// A collinear overlap that is a ray (a ray against a collinear line or ray going the
+/// same way), or a ray lying in a plane: the points `start + s·dir`, `s ≥ 0`.
+#[derive(Debug, Clone, PartialEq)]
+pub struct RayAnswer {
+    /// The ray's start point, with its parameters on each input shape.
+    pub start: Point,
+    /// A direction of the ray (its length means nothing): the first input's own
+    /// direction or its opposite, each coordinate correctly rounded.
+    pub dir: Vec<f64>,
+    /// For each input shape in input order: whether its parameter grows along the ray
+    /// (`None`: a shape without one parameter, such as a plane).
+    pub increasing: Vec<Option<bool>>,
+    /// The exact direction, on request.
+    pub exact_dir: Option<Vec<Rational>>,
+}
+
 /// How one end of an intersection curve ends (OPERATIONS.md §9.1 end kinds).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum CurveEnd {
@@ -247,6 +263,8 @@ pub enum Answer {
     Line(LineAnswer),
     /// A segment (overlapping collinear segments, a ranged line lying in a plane).
     Segment(SegmentAnswer),
+    /// A ray (collinear objects overlapping in a ray, a ray lying in a plane).
+    Ray(RayAnswer),
     /// Three coincident planes.
     Plane,
     /// The two shapes coincide.
@@ -272,6 +290,7 @@ impl Answer {
             Answer::Points(_) => "points",
             Answer::Line(_) => "line",
             Answer::Segment(_) => "segment",
+            Answer::Ray(_) => "ray",
             Answer::Plane => "plane",
             Answer::Coincident => "coincident",
             Answer::CommonComponent => "common_component",

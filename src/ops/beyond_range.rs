@@ -40,6 +40,7 @@ fn points_mut(a: &mut Answer) -> Vec<&mut Point> {
     match a {
         Answer::Points(p) => p.iter_mut().collect(),
         Answer::Segment(s) => vec![&mut s.a, &mut s.b],
+        Answer::Ray(r) => vec![&mut r.start],
         Answer::Side(_, Some(p)) => vec![p],
         _ => vec![],
     }
@@ -50,6 +51,7 @@ pub fn answer_beyond_range(a: &Answer) -> bool {
     match a {
         Answer::Points(p) => p.iter().any(point_beyond_range),
         Answer::Segment(s) => point_beyond_range(&s.a) || point_beyond_range(&s.b),
+        Answer::Ray(r) => point_beyond_range(&r.start) || beyond(&r.dir),
         Answer::Side(_, Some(p)) => point_beyond_range(p),
         Answer::Line(l) => line_beyond_range(l),
         _ => false,
@@ -68,6 +70,11 @@ pub fn keep_exact_beyond_range(a: &mut Answer) {
     if let Answer::Line(l) = a {
         if !line_beyond_range(l) {
             l.exact = None;
+        }
+    }
+    if let Answer::Ray(r) = a {
+        if !beyond(&r.dir) {
+            r.exact_dir = None;
         }
     }
 }

@@ -45,7 +45,8 @@ pub mod view;
 
 pub use answer::{
     Answer, BlendAnswer, BlendComponent, BlendGrid, BlendKind, CurveAnswer, CurveEnd, CurveVertex,
-    CurvesAnswer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer, SingularPointAnswer,
+    CurvesAnswer, ExactPoint, LineAnswer, ParamLine, Point, RayAnswer, SegmentAnswer,
+    SingularPointAnswer,
 };
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use fillet::{chamfer, fillet, BlendSpec};

@@ -176,10 +176,7 @@ impl Linear {
         Ok(Some(match self.doubles()? {
             LinearObject::Line(l) => {
                 let (o, d) = (arr3(l.origin()), arr3(l.dir()));
-                let range = match l.range() {
-                    Some(&[a, b]) => (a, b),
-                    None => reach(&o, &d).ok_or_else(needs_range)?,
-                };
+                let range = span(l.bounds(), || reach(&o, &d))?;
                 AnyCurve3::Line(CurveLine::new(o, d, Some(range))?)
             }
             LinearObject::Segment(s) => {
@@ -202,10 +199,7 @@ impl Linear {
         Ok(match self.doubles()? {
             LinearObject::Line2(l) => {
                 let (o, d) = ([l.origin()[0], l.origin()[1]], [l.dir()[0], l.dir()[1]]);
-                let range = match l.range() {
-                    Some(&[a, b]) => (a, b),
-                    None => reach(&o, &d).ok_or_else(needs_range)?,
-                };
+                let range = span(l.bounds(), || reach(&o, &d))?;
                 Some(AnyCurve2::Line(CurveLine::new(o, d, Some(range))?))
             }
             LinearObject::Segment2(s) => Some(AnyCurve2::Segment(CurveSegment::new(
@@ -295,6 +289,29 @@ fn not_doubles(field: &str) -> GeomError {
         field: field.into(),
         reason: "curved operations take doubles, not exact strings".into(),
     }
+}
+
+/// The parameter span a line is cut to as a curve: its closed range, or for an
+/// unbounded end the part `reach` (a certified cover of the parameters that can meet
+/// the other object) keeps of it. A ray whose reach is empty or one point (its end
+/// beyond the cover, or on its edge) is cut to `[lo, next_up(lo)]` (`[next_down(hi),
+/// hi]`): a part of the ray that holds every point the cover allows, so the answer
+/// is the ray's, never the whole carrier's.
+fn span(
+    (lo, hi): (Option<&f64>, Option<&f64>),
+    reach: impl FnOnce() -> Option<(f64, f64)>,
+) -> Result<(f64, f64), GeomError> {
+    if let (Some(&a), Some(&b)) = (lo, hi) {
+        return Ok((a, b));
+    }
+    let (a, b) = reach().ok_or_else(needs_range)?;
+    Ok(match (lo, hi) {
+        (Some(&lo), _) if lo.max(a) < b => (lo.max(a), b),
+        (Some(&lo), _) => (lo, lo.next_up()),
+        (_, Some(&hi)) if a < hi.min(b) => (a, hi.min(b)),
+        (_, Some(&hi)) => (hi.next_down(), hi),
+        (None, None) => (a, b),
+    })
 }
 
 fn needs_range() -> GeomError {

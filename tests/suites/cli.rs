@@ -18,6 +18,8 @@ mod budgets;
 mod cli_curved;
 #[path = "../cli_input.rs"]
 mod cli_input;
+#[path = "../cli_rays.rs"]
+mod cli_rays;
 #[path = "../cli_run.rs"]
 mod cli_run;
 #[path = "../cli_solve.rs"]

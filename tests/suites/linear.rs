@@ -54,3 +54,5 @@ mod oracle_kernels;
 mod oracle_smoke;
 #[path = "../overflow.rs"]
 mod overflow;
+#[path = "../space_rays_exact.rs"]
+mod space_rays_exact;

@@ -33,27 +33,9 @@ const EPS_S: f64 = 2982.0 * U * U;
 const EPS_T: f64 = 155.0 * U * U;
 const EPS_P: f64 = 1109.0 * U * U;
 
-/// The ends of a line's (ray's, segment's) domain as doubles, `None` for infinite.
-fn bounds(l: Linear<f64>) -> (Option<f64>, Option<f64>) {
-    match l {
-        Linear::Line(l) => {
-            let (lo, hi) = l.bounds();
-            (lo.copied(), hi.copied())
-        }
-        Linear::Segment(_) => (Some(0.0), Some(1.0)),
-    }
-}
-
-/// Whether the exact value of `t` lies in the domain of `l` (decided on the enclosure:
-/// the domain's ends are doubles).
-fn inside(t: &Rounded, l: Linear<f64>) -> bool {
-    let (lo, hi) = bounds(l);
-    lo.is_none_or(|lo| t.compare_f64(lo).is_ge()) && hi.is_none_or(|hi| t.compare_f64(hi).is_le())
-}
-
 /// The crossing point of both carriers: a point, or outside a domain.
 fn answer(p: LineLinePoint<Rounded>, a: Linear<f64>, b: Linear<f64>) -> LineLine<Rounded> {
-    if inside(&p.t1, a) && inside(&p.t2, b) {
+    if a.bounds_contain(&p.t1) && b.bounds_contain(&p.t2) {
         LineLine::Point(p)
     } else {
         LineLine::Empty(LineLineEmpty::OutsideDomain(p))

@@ -57,13 +57,6 @@ pub(crate) fn terms_from<R: Ring>(l: &LineData<R>, p: &PlaneData<R>, den: R, f0:
     }
 }
 
-pub(super) fn in_range<R: Field>(t: &R, range: &Option<[R; 2]>) -> bool {
-    match range {
-        None => true,
-        Some([a, b]) => t.compare(a).is_ge() && t.compare(b).is_le(),
-    }
-}
-
 /// The exact decision procedure, generic over the field (`f64`: plain; `Rational`: exact).
 pub(crate) fn core<R: Field>(l: &LineData<R>, p: &PlaneData<R>) -> LinePlane<R> {
     let den = dot3(p.n(), &l.d);
@@ -77,7 +70,7 @@ pub(crate) fn core<R: Field>(l: &LineData<R>, p: &PlaneData<R>) -> LinePlane<R> 
     }
     let tm = terms_from(l, p, den, f0);
     let t = tm.f0.negate().divide(&tm.den);
-    let inside = in_range(&t, &l.range);
+    let inside = l.contains(&t);
     let [x, y, z] = tm.pnum.map(|q| q.divide(&tm.den));
     let point = LinePlanePoint {
         point: Vector3::new(x, y, z),

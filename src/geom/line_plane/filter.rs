@@ -100,13 +100,7 @@ pub(super) fn answer(
     point: [Rounded; 3],
     uv: Option<[Rounded; 2]>,
 ) -> LinePlane<Rounded> {
-    let inside = match line {
-        Linear::Line(l) => match l.range() {
-            None => true,
-            Some([a, b]) => t.compare_f64(*a).is_ge() && t.compare_f64(*b).is_le(),
-        },
-        Linear::Segment(_) => t.compare_f64(0.0).is_ge() && t.compare_f64(1.0).is_le(),
-    };
+    let inside = line.bounds_contain(&t);
     let pt = LinePlanePoint {
         point: Vector3::from(point),
         t,

@@ -140,12 +140,12 @@ fn filter_constants() {
         LineData {
             o: [i; 3],
             d: [i; 3],
-            range: None,
+            ends: [None, None],
         },
         LineData {
             o: [i; 3],
             d: [i.minus(&i); 3],
-            range: None,
+            ends: [None, None],
         },
     ];
     let planes = [

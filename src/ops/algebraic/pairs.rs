@@ -43,9 +43,12 @@ fn arr<const D: usize>(v: impl Iterator<Item = Rational>) -> [Rational; D] {
     v.try_into().expect("dimension checked by the shape")
 }
 
-/// A 3D line or segment, exactly.
+/// A 3D line or segment, exactly; `None` for a ray too (an [`ExactLine`] has a closed
+/// range or none, so a ray would be answered as its whole carrier: rays take the
+/// curved path, which cuts them to a closed span, `Linear::to_curve3`).
 pub(super) fn line3(shape: &Linear) -> Option<ExactLine<3>> {
     match shape.exact() {
+        LinearObject::Line(l) if l.is_ray() => None,
         LinearObject::Line(l) => Some(ExactLine {
             o: arr(l.origin().iter().cloned()),
             d: arr(l.dir().iter().cloned()),
@@ -66,6 +69,7 @@ fn line2(shape: &Shape) -> Option<ExactLine<2>> {
         return None;
     };
     match linear.exact() {
+        LinearObject::Line2(l) if l.is_ray() => None,
         LinearObject::Line2(l) => Some(ExactLine {
             o: arr(l.origin().iter().cloned()),
             d: arr(l.dir().iter().cloned()),

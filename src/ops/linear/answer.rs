@@ -1,11 +1,11 @@
 //! Results of the linear kernels → [`Answer`]s: each kind of result is written once,
 //! for both kernels (their numbers are [`Q`]s).
 
+use nalgebra::Vector3;
 use rug::Rational;
 
 use super::kernel::{Len, Q};
 use crate::certificate::Certified;
-use crate::error::GeomError;
 use crate::geom::line_line::{LineLine, LineLineEmpty};
 use crate::geom::line_plane::{LinePlane, LinePlanePoint};
 use crate::geom::lines2::{Empty2, Intersection2};
@@ -13,7 +13,9 @@ use crate::geom::plane_plane::{ParamLine as KernelParamLine, PlaneLine, PlanePla
 use crate::geom::project::{LineFoot, LineProjection, PlaneProjection};
 use crate::geom::three_planes::ThreePlanes;
 use crate::geom::{Coord, Linear, Linear2};
-use crate::ops::answer::{Answer, ExactPoint, LineAnswer, ParamLine, Point, SegmentAnswer};
+use crate::ops::answer::{
+    Answer, ExactPoint, LineAnswer, ParamLine, Point, RayAnswer, SegmentAnswer,
+};
 use crate::ops::classify::ShellPoint;
 
 /// The parameters of a point on each input shape (input order; `None`: the shape has
@@ -56,8 +58,9 @@ fn empty<T>(c: &Certified<T>, reason: &str) -> Certified<Answer> {
 }
 
 /// Line ∩ plane; `line_first` says which of the two inputs is the line. A line lying
-/// in the plane is the line itself (kind `line`), or for a segment or a ranged line
-/// its end points (kind `segment`), with their parameters on the line.
+/// in the plane is the line itself (kind `line`), a ray its start and direction (kind
+/// `ray`), a segment or a ranged line its end points (kind `segment`), with their
+/// parameters on the line.
 pub(crate) fn line_plane<T: Coord>(
     c: Certified<LinePlane<Q>>,
     l: Linear<'_, T>,
@@ -77,54 +80,107 @@ pub(crate) fn line_plane<T: Coord>(
     }
 }
 
-/// A line or segment lying in the plane (see [`line_plane`]).
-fn contained<T: Coord>(l: Linear<'_, T>, line_first: bool, keep: bool) -> Answer {
-    let q = |x: &Rational| Q::rational(x, keep);
-    let (o, d, range) = match l {
-        Linear::Line(line) => (
-            line.origin().map(|x| x.to_rational()),
-            line.dir().map(|x| x.to_rational()),
-            line.range()
-                .map(|[a, b]| [a.to_rational(), b.to_rational()]),
-        ),
+/// The carrier `o + t·d` of a line, ray or segment in rationals, with the ends of its
+/// domain (`None`: infinite).
+struct ExactCarrier {
+    o: Vector3<Rational>,
+    d: Vector3<Rational>,
+    ends: [Option<Rational>; 2],
+}
+
+fn exact_carrier<T: Coord>(l: Linear<'_, T>) -> ExactCarrier {
+    match l {
+        Linear::Line(line) => {
+            let (lo, hi) = line.bounds();
+            ExactCarrier {
+                o: line.origin().map(|x| x.to_rational()),
+                d: line.dir().map(|x| x.to_rational()),
+                ends: [lo.map(Coord::to_rational), hi.map(Coord::to_rational)],
+            }
+        }
         Linear::Segment(s) => {
             let a = s.a().map(|x| x.to_rational());
-            let d = s.b().map(|x| x.to_rational()) - &a;
-            (a, d, Some([Rational::from(0), Rational::from(1)]))
+            ExactCarrier {
+                d: s.b().map(|x| x.to_rational()) - &a,
+                o: a,
+                ends: [Some(Rational::from(0)), Some(Rational::from(1))],
+            }
         }
-    };
-    let Some(range) = range else {
-        let param = ParamLine {
-            origin: vec![0.0],
-            dir: vec![1.0],
-        };
-        let mut params = vec![Some(param), None];
-        if !line_first {
-            params.reverse();
-        }
-        return Answer::Line(LineAnswer {
-            point: o.iter().map(|x| q(x).r.nearest).collect(),
-            dir: d.iter().map(|x| q(x).r.nearest).collect(),
-            params,
-            exact: None,
-        });
-    };
+    }
+}
+
+/// The inputs' slots of a one-parameter shape's value (`line_first`: it is the first
+/// of the two inputs, the other has no parameter to report).
+fn slots<X>(mine: X, line_first: bool) -> Vec<Option<X>> {
+    if line_first {
+        vec![Some(mine), None]
+    } else {
+        vec![None, Some(mine)]
+    }
+}
+
+/// A ray of an answer from its start, along `d` or (`forward` false) `−d`, with the
+/// inputs' parameter directions.
+fn ray(
+    start: Point,
+    d: &Vector3<Rational>,
+    forward: bool,
+    increasing: Vec<Option<bool>>,
+    keep: bool,
+) -> Answer {
+    let dir: Vec<Rational> = d
+        .iter()
+        .map(|x| {
+            if forward {
+                x.clone()
+            } else {
+                Rational::from(-x)
+            }
+        })
+        .collect();
+    Answer::Ray(RayAnswer {
+        start,
+        dir: dir
+            .iter()
+            .map(|x| Q::rational(x, false).r.nearest)
+            .collect(),
+        increasing,
+        exact_dir: keep.then_some(dir),
+    })
+}
+
+/// A line, ray or segment lying in the plane (see [`line_plane`]).
+fn contained<T: Coord>(l: Linear<'_, T>, line_first: bool, keep: bool) -> Answer {
+    let q = |x: &Rational| Q::rational(x, keep);
+    let ExactCarrier { o, d, ends } = exact_carrier(l);
     let end = |t: &Rational| {
         let xyz: Vec<Q> = (0..3)
             .map(|i| Q::rational(&(o[i].clone() + d[i].clone() * t), keep))
             .collect();
         let t = [Q::rational(t, keep)];
-        let params = if line_first {
-            vec![Some(&t[..]), None]
-        } else {
-            vec![None, Some(&t[..])]
-        };
+        let params = slots(&t[..], line_first);
         point(&xyz, params)
     };
-    Answer::Segment(SegmentAnswer {
-        a: end(&range[0]),
-        b: end(&range[1]),
-    })
+    match ends {
+        [None, None] => Answer::Line(LineAnswer {
+            point: o.iter().map(|x| q(x).r.nearest).collect(),
+            dir: d.iter().map(|x| q(x).r.nearest).collect(),
+            params: slots(
+                ParamLine {
+                    origin: vec![0.0],
+                    dir: vec![1.0],
+                },
+                line_first,
+            ),
+            exact: None,
+        }),
+        [Some(lo), None] => ray(end(&lo), &d, true, slots(true, line_first), keep),
+        [None, Some(hi)] => ray(end(&hi), &d, false, slots(false, line_first), keep),
+        [Some(lo), Some(hi)] => Answer::Segment(SegmentAnswer {
+            a: end(&lo),
+            b: end(&hi),
+        }),
+    }
 }
 
 fn param_line(p: &Option<KernelParamLine<Q>>) -> Option<ParamLine> {
@@ -219,10 +275,15 @@ pub(crate) fn lines2<T: Coord>(
 /// [`crate::geom::line_line`]): a crossing (`points`), a collinear overlap (`segment`),
 /// two identical unbounded lines (`coincident`), or `empty` with the kernel's reason
 /// (`parallel`, `skew`, `collinear_disjoint`, `extensions_meet`). A collinear overlap
-/// that is a ray (a ray against a collinear line or ray) has no kind in the answer
-/// format: refused as `unsupported` rather than reported as more or less than it is.
-pub(crate) fn line_line(c: Certified<LineLine<Q>>) -> Result<Certified<Answer>, GeomError> {
-    Ok(match &c.value {
+/// that is a ray (a ray against a collinear line, or two collinear rays going the same
+/// way) is kind `ray`: its start, and the direction of the first object (`first`) or
+/// its opposite.
+pub(crate) fn line_line<T: Coord>(
+    c: Certified<LineLine<Q>>,
+    first: Linear<'_, T>,
+    keep: bool,
+) -> Certified<Answer> {
+    match &c.value {
         LineLine::Point(p) => c.clone_with(Answer::Points(vec![point2(
             p.point.as_slice(),
             &p.t1,
@@ -242,19 +303,22 @@ pub(crate) fn line_line(c: Certified<LineLine<Q>>) -> Result<Certified<Answer>, 
             r.reason = Some("the two lines coincide".into());
             r
         }
-        LineLine::Ray { .. } => {
-            return Err(GeomError::Unsupported {
-                field: "objects".into(),
-                reason: "the two collinear objects overlap in a ray, which the answer format \
-                         has no kind for"
-                    .into(),
-            })
-        }
+        LineLine::Ray {
+            a,
+            a_params,
+            increasing,
+        } => c.clone_with(ray(
+            point2(a.as_slice(), &a_params[0], &a_params[1]),
+            &exact_carrier(first).d,
+            increasing[0],
+            increasing.iter().map(|&i| Some(i)).collect(),
+            keep,
+        )),
         LineLine::Empty(LineLineEmpty::Parallel) => empty(&c, "parallel"),
         LineLine::Empty(LineLineEmpty::Skew) => empty(&c, "skew"),
         LineLine::Empty(LineLineEmpty::CollinearDisjoint) => empty(&c, "collinear_disjoint"),
         LineLine::Empty(LineLineEmpty::OutsideDomain(_)) => empty(&c, "extensions_meet"),
-    })
+    }
 }
 
 /// The carrier of a 2D line or segment.

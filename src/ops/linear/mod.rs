@@ -83,12 +83,19 @@ fn intersect_in<T: Kernel>(
                 ));
             }
             if let (Some(l), Some(m)) = (a.linear(), b.linear()) {
-                return answer::line_line(T::line_line(l, m, keep));
+                return Ok(answer::line_line(T::line_line(l, m, keep), l, keep));
             }
             if let (Some(p), Some(q)) = (a.plane(), b.plane()) {
                 return Ok(answer::plane_plane(T::plane_plane(p, q, keep)));
             }
             if let (Some(l), Some(m)) = (a.linear2(), b.linear2()) {
+                // The 2D kernel reads closed ranges only: a ray would be its whole line.
+                if let Some(i) = [l, m].iter().position(is_ray2) {
+                    return Err(GeomError::Unsupported {
+                        field: format!("objects[{i}].range"),
+                        reason: "a ray in the plane is not implemented in this build".into(),
+                    });
+                }
                 return Ok(answer::lines2(T::lines2(l, m, keep), l));
             }
             Err(unsupported_pair(objects))
@@ -105,6 +112,10 @@ fn intersect_in<T: Kernel>(
             reason: format!("intersect takes 2 or 3 objects, found {}", other.len()),
         }),
     }
+}
+
+fn is_ray2<T: Coord>(l: &crate::geom::Linear2<'_, T>) -> bool {
+    matches!(l, crate::geom::Linear2::Line(l) if l.is_ray())
 }
 
 /// A query point as a 3D vector (`field`: its name in messages).

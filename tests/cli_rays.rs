@@ -1,0 +1,149 @@
+//! Rays in the case format (docs/FORMAT.md "Linear objects"): a `line` whose `range`
+//! has a `null` end, end to end through `geocert solve` — the answers of kind `ray`,
+//! `segment`, `points` and `empty` with exact values known by construction, the
+//! `[null, null]` spelling of the whole line, and one typed error per bad range naming
+//! its field.
+
+use serde_json::{json, Value};
+
+mod cli_support;
+
+use cli_support::f64s;
+
+fn solve_one(case: Value) -> Value {
+    let (mut r, _) = cli_support::solve_text(&format!("{case}\n"));
+    assert_eq!(r.len(), 1, "{r:?}");
+    r.remove(0)
+}
+
+fn line(origin: [i32; 3], dir: [i32; 3], range: Value) -> Value {
+    json!({"type": "line", "origin": origin, "dir": dir, "range": range})
+}
+
+fn intersect(a: Value, b: Value) -> Value {
+    solve_one(json!({"id": 1, "op": "intersect", "objects": [a, b]}))
+}
+
+/// Two rays along the x-axis going the same way: the later one, exactly; with
+/// `options.exact`, the direction as strings.
+#[test]
+fn same_way_rays_answer_the_later_ray() {
+    let a = line([0, 0, 0], [2, 0, 0], json!([0, null]));
+    let b = line([3, 0, 0], [1, 0, 0], json!([1, null]));
+    let r = intersect(a.clone(), b.clone());
+    assert_eq!(r["status"], "exact", "{r}");
+    assert_eq!(r["kind"], "ray", "{r}");
+    assert_eq!(r["complete"], true);
+    let ray = &r["ray"];
+    // b starts at x = 4 (t₂ = 1), where t₁ = 2.
+    assert_eq!(f64s(&ray["start"]["xyz"]), vec![4.0, 0.0, 0.0], "{r}");
+    assert_eq!(f64s(&ray["start"]["params"][0]), vec![2.0]);
+    assert_eq!(f64s(&ray["start"]["params"][1]), vec![1.0]);
+    assert_eq!(f64s(&ray["dir"]), vec![2.0, 0.0, 0.0]);
+    assert_eq!(ray["increasing"], json!([true, true]));
+    assert!(ray.get("exact").is_none(), "{r}");
+    let r = solve_one(json!({"id": 2, "op": "intersect", "objects": [a, b],
+                             "options": {"exact": true}}));
+    assert_eq!(r["ray"]["exact"]["dir"], json!(["2", "0", "0"]), "{r}");
+    assert_eq!(
+        r["ray"]["start"]["exact"]["xyz"],
+        json!(["4", "0", "0"]),
+        "{r}"
+    );
+}
+
+/// A ray `t ≤ 1` against the x-axis reversed: the ray from x = 1 towards −x, the second
+/// object's parameter growing along it.
+#[test]
+fn a_backward_ray_on_a_reversed_line() {
+    let a = line([0, 0, 0], [1, 0, 0], json!([null, 1]));
+    let b = line([5, 0, 0], [-1, 0, 0], json!(null));
+    let r = intersect(a, b);
+    assert_eq!(r["kind"], "ray", "{r}");
+    assert_eq!(f64s(&r["ray"]["start"]["xyz"]), vec![1.0, 0.0, 0.0]);
+    assert_eq!(f64s(&r["ray"]["start"]["params"][1]), vec![4.0]);
+    assert_eq!(f64s(&r["ray"]["dir"]), vec![-1.0, 0.0, 0.0]);
+    assert_eq!(r["ray"]["increasing"], json!([false, true]));
+}
+
+/// Opposite rays: a segment, or one point where they only touch, or nothing.
+#[test]
+fn opposite_rays_meet_in_a_segment_a_point_or_not() {
+    let up = line([0, 0, 0], [0, 1, 0], json!([0, null]));
+    let down = |y: i32| line([0, y, 0], [0, -1, 0], json!([0, null]));
+    let r = intersect(up.clone(), down(3));
+    assert_eq!(r["kind"], "segment", "{r}");
+    assert_eq!(f64s(&r["segment"]["a"]["xyz"]), vec![0.0, 0.0, 0.0]);
+    assert_eq!(f64s(&r["segment"]["b"]["xyz"]), vec![0.0, 3.0, 0.0]);
+    let r = intersect(up.clone(), down(0));
+    assert_eq!(r["kind"], "points", "{r}");
+    assert_eq!(f64s(&r["points"][0]["xyz"]), vec![0.0, 0.0, 0.0]);
+    let r = intersect(up, down(-1));
+    assert_eq!(r["kind"], "empty", "{r}");
+    assert_eq!(r["reason"], "collinear_disjoint");
+}
+
+/// A ray crossing a line behind its start: `extensions_meet`; ahead: the point. A ray
+/// against a plane: `outside_domain` behind, and a ray lying in the plane is kind `ray`
+/// with `null` for the plane's direction flag.
+#[test]
+fn rays_crossing_lines_and_planes() {
+    let ray = line([0, 0, 0], [1, 1, 0], json!([1, null]));
+    let cross = |x: i32| line([x, 0, 0], [0, 1, 0], json!(null));
+    let r = intersect(ray.clone(), cross(2));
+    assert_eq!(r["kind"], "points", "{r}");
+    assert_eq!(f64s(&r["points"][0]["xyz"]), vec![2.0, 2.0, 0.0]);
+    let r = intersect(ray.clone(), cross(1));
+    assert_eq!(r["kind"], "points", "{r}: on the start");
+    let r = intersect(ray.clone(), cross(0));
+    assert_eq!(r["kind"], "empty", "{r}");
+    assert_eq!(r["reason"], "extensions_meet");
+    let plane = |d: i32| json!({"type": "plane", "normal": [1, 0, 0], "d": d});
+    let r = intersect(ray.clone(), plane(-3));
+    assert_eq!(f64s(&r["points"][0]["xyz"]), vec![3.0, 3.0, 0.0], "{r}");
+    let r = intersect(ray.clone(), plane(0));
+    assert_eq!(r["kind"], "empty", "{r}");
+    assert_eq!(r["reason"], "outside_domain");
+    let flat = json!({"type": "plane", "normal": [0, 0, 1], "d": 0});
+    let r = intersect(flat, ray);
+    assert_eq!(r["kind"], "ray", "{r}");
+    assert_eq!(f64s(&r["ray"]["start"]["xyz"]), vec![1.0, 1.0, 0.0]);
+    assert_eq!(f64s(&r["ray"]["start"]["params"][1]), vec![1.0]);
+    assert_eq!(r["ray"]["increasing"], json!([null, true]));
+}
+
+/// `[null, null]` is the whole line: two such lines on one carrier coincide, as
+/// without `range`; the alias `domain` takes the same spelling.
+#[test]
+fn both_ends_null_is_the_whole_line() {
+    let a = line([0, 0, 0], [1, 2, 3], json!([null, null]));
+    let b = json!({"type": "line", "origin": [1, 2, 3], "dir": [2, 4, 6], "domain": [null, null]});
+    let r = intersect(a, b);
+    assert_eq!(r["kind"], "coincident", "{r}");
+}
+
+/// Bad ranges are typed errors naming the field: inverted, an end that is not a
+/// number, a wrong length or type, a ray in the plane (not implemented).
+#[test]
+fn bad_ranges_are_typed_errors() {
+    let other = line([0, 1, 0], [1, 0, 0], json!(null));
+    let cases = [
+        (json!([2, 1]), "empty_domain", "objects[0].range"),
+        (json!([2, "inf"]), "invalid_number", "objects[0].range[1]"),
+        (json!(["x", null]), "invalid_number", "objects[0].range[0]"),
+        (json!([0, null, 1]), "format", "objects[0].range"),
+        (json!([true, null]), "format", "objects[0].range"),
+    ];
+    for (range, kind, field) in cases {
+        let r = intersect(line([0, 0, 0], [1, 0, 0], range.clone()), other.clone());
+        assert_eq!(r["status"], "error", "{range}: {r}");
+        assert_eq!(r["error"]["kind"], kind, "{range}: {r}");
+        let named = r["error"]["field"].as_str().unwrap();
+        assert!(named.starts_with(field), "{range}: {r}");
+    }
+    let ray2 = json!({"type": "line2", "origin": [0, 0], "dir": [1, 0], "range": [0, null]});
+    let seg2 = json!({"type": "segment2", "a": [0, 0], "b": [1, 1]});
+    let r = intersect(ray2, seg2);
+    assert_eq!(r["error"]["kind"], "unsupported", "{r}");
+    assert_eq!(r["error"]["field"], "objects[0].range", "{r}");
+}
