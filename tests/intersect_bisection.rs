@@ -367,8 +367,8 @@ fn segments_against_quadric_matrices() {
                 m[j][i] = v;
             }
         }
-        for i in 0..3 {
-            let v: f64 = -(0..3).map(|j| m[i][j] * x0[j]).sum::<f64>();
+        let b: [f64; 3] = std::array::from_fn(|i| -(0..3).map(|j| m[i][j] * x0[j]).sum::<f64>());
+        for (i, &v) in b.iter().enumerate() {
             m[i][3] = v;
             m[3][i] = v;
         }

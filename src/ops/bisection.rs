@@ -90,7 +90,8 @@ pub fn bisect(g: impl Fn(f64) -> f64, bracket: Bracket, e: f64) -> f64 {
     let mut mid = 0.5 * (s1 + s2);
     for _ in 0..MAX_HALVINGS {
         mid = s1 + 0.5 * (s2 - s1);
-        if !(s2 - s1 > e) || mid <= s1 || mid >= s2 {
+        // (`e` is finite and the ends are finite: the width is never NaN.)
+        if s2 - s1 <= e || mid <= s1 || mid >= s2 {
             break;
         }
         let v = g(mid);

@@ -50,15 +50,15 @@ fn eigen(mut a: [[f64; 3]; 3]) -> ([f64; 3], [[f64; 3]; 3]) {
             let t = if theta == 0.0 { 1.0 } else { t };
             let (c, s) = (1.0 / (t * t + 1.0).sqrt(), t / (t * t + 1.0).sqrt());
             // A ← Jᵀ A J with the rotation J in the (p, r) plane; V ← V J.
-            for k in 0..3 {
-                let (akp, akr) = (a[k][p], a[k][r]);
-                a[k][p] = c * akp - s * akr;
-                a[k][r] = s * akp + c * akr;
+            for row in &mut a {
+                let (akp, akr) = (row[p], row[r]);
+                row[p] = c * akp - s * akr;
+                row[r] = s * akp + c * akr;
             }
+            let (row_p, row_r) = (a[p], a[r]);
             for k in 0..3 {
-                let (apk, ark) = (a[p][k], a[r][k]);
-                a[p][k] = c * apk - s * ark;
-                a[r][k] = s * apk + c * ark;
+                a[p][k] = c * row_p[k] - s * row_r[k];
+                a[r][k] = s * row_p[k] + c * row_r[k];
             }
             for row in &mut v {
                 let (vp, vr) = (row[p], row[r]);
@@ -86,9 +86,9 @@ pub fn as_ellipsoid(q: &ImplicitQuadric) -> Option<Ellipsoid> {
     let col = |k: usize| [v[0][k], v[1][k], v[2][k]];
     let mut x0 = [0.0; 3];
     let mut kappa = -c;
-    for k in 0..3 {
+    for (k, lk) in l.iter().enumerate() {
         let e = col(k);
-        let w = dot(&e, &b) / l[k];
+        let w = dot(&e, &b) / lk;
         kappa += w * dot(&e, &b);
         for (x, ek) in x0.iter_mut().zip(e) {
             *x -= w * ek;
@@ -110,7 +110,7 @@ pub struct SectionPlane {
 }
 
 /// The zero set of `F` on the square of `plane`, `grid` cells per side, as 3D polylines.
-pub fn section(q: &ImplicitQuadric, plane: &SectionPlane, grid: usize) -> Vec<Vec<[f64; 3]>> {
+pub fn section(q: &ImplicitQuadric, plane: &SectionPlane, grid: usize) -> Polylines {
     use crate::surface::Implicit;
     let at = |i: f64, j: f64| {
         let (s, t) = (
@@ -127,6 +127,9 @@ pub fn section(q: &ImplicitQuadric, plane: &SectionPlane, grid: usize) -> Vec<Ve
     .collect()
 }
 
+/// Polylines in space.
+pub type Polylines = Vec<Vec<[f64; 3]>>;
+
 /// The sections of the net (`levels[0]` planes normal to `z`, `levels[1]` normal to
 /// `x`, spread across the ball of `radius` about `centre`) and the contour plane's
 /// section in `view` (module doc), `grid` cells per side each.
@@ -137,7 +140,7 @@ pub fn sections(
     radius: f64,
     levels: [usize; 2],
     grid: usize,
-) -> (Vec<Vec<[f64; 3]>>, Vec<Vec<[f64; 3]>>) {
+) -> (Polylines, Polylines) {
     let mut net = Vec::new();
     for (axis, count, u, v) in [
         (2, levels[0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
@@ -181,7 +184,7 @@ fn contour_plane(
     };
     let nn = dot(&n, &n);
     let size = a.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    if !(nn > (1e-12 * size).powi(2)) || !nn.is_finite() {
+    if nn.is_nan() || nn <= (1e-12 * size).powi(2) || !nn.is_finite() {
         return None;
     }
     let (u, v) = super::model::plane_axes(n);
