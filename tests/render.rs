@@ -534,3 +534,125 @@ fn central_and_torus_outlines_are_tangencies() {
         assert!(n > 50, "{n}");
     }
 }
+
+fn quadric(m: [[f64; 4]; 4]) -> Shape {
+    Shape::Quadric(geocert::surface::implicit::ImplicitQuadric::new(m).expect("a valid matrix"))
+}
+
+#[test]
+fn an_implicit_ellipsoid_is_drawn_as_the_ellipsoid_of_16_14() {
+    // §16.14's ellipsoid x²/9 + y²/9 + z²/25 = 1 given by its matrix, turned (x ↔ z
+    // is the same surface with c along x): its isometric outline is the section by the
+    // conjugate plane x/25 + y/9 + z/9 = 0, and as an ellipsoid it occludes its far side.
+    let (a, c) = (1.0 / 9.0, 1.0 / 25.0);
+    let shape = quadric([
+        [c, 0.0, 0.0, 0.0],
+        [0.0, a, 0.0, 0.0],
+        [0.0, 0.0, a, 0.0],
+        [0.0, 0.0, 0.0, -1.0],
+    ]);
+    let scene = draw(&[shape], &View::isometric());
+    let mut n = 0;
+    for s in scene.strokes.iter().filter(|s| s.role == Role::Contour) {
+        assert!(!s.hidden, "a lone ellipsoid's outline is visible");
+        for x in &s.source {
+            let surface = x[0] * x[0] * c + (x[1] * x[1] + x[2] * x[2]) * a - 1.0;
+            let plane = x[0] * c + x[1] * a + x[2] * a;
+            assert!(
+                surface.abs() < 2e-3 && plane.abs() < 2e-3,
+                "outline vertex {x:?}"
+            );
+            n += 1;
+        }
+    }
+    assert!(n > 100, "{n}");
+    let net: Vec<_> = scene
+        .strokes
+        .iter()
+        .filter(|s| s.role == Role::Net)
+        .collect();
+    assert!(net.iter().any(|s| s.hidden) && net.iter().any(|s| !s.hidden));
+    for s in &net {
+        for x in &s.source {
+            let surface = x[0] * x[0] * c + (x[1] * x[1] + x[2] * x[2]) * a - 1.0;
+            // (a vertex where a stroke is split into hidden and visible runs lies on a
+            // chord of the net line: off the surface by the chord's sag)
+            assert!(surface.abs() < 2e-3, "net vertex {x:?} off the ellipsoid");
+        }
+    }
+}
+
+#[test]
+fn an_unbounded_quadric_is_drawn_by_its_sections_and_its_contour_plane() {
+    // The one-sheet hyperboloid x² + y² − z² = 1 beside a sphere that sets the window.
+    // Frontal view (d = (0, −1, 0)): the contour lies on the plane (A d)·x = −y = 0,
+    // so it is the hyperbola x² − z² = 1 of y = 0. Every net vertex lies on the surface
+    // (within the marching squares' interpolation); the net has sections in both
+    // families (planes z = const and x = const).
+    let shape = quadric([
+        [1.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, -1.0, 0.0],
+        [0.0, 0.0, 0.0, -1.0],
+    ]);
+    let scene = draw(&[sphere([0.0, 0.0, 0.0], 3.0), shape], &View::frontal());
+    let of = |role: Role| {
+        scene
+            .strokes
+            .iter()
+            .filter(move |s| s.role == role && s.object == Some(1))
+    };
+    let f = |x: &[f64; 3]| x[0] * x[0] + x[1] * x[1] - x[2] * x[2] - 1.0;
+    let (mut flat_z, mut flat_x) = (0, 0);
+    for s in of(Role::Net) {
+        for x in &s.source {
+            assert!(f(x).abs() < 0.05 * (1.0 + x[2] * x[2]), "net vertex {x:?}");
+        }
+        let spread = |k: usize| {
+            let (lo, hi) = s
+                .source
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(l, h), x| {
+                    (l.min(x[k]), h.max(x[k]))
+                });
+            hi - lo
+        };
+        flat_z += usize::from(spread(2) == 0.0);
+        flat_x += usize::from(spread(0) == 0.0);
+    }
+    assert!(
+        flat_z >= 10 && flat_x >= 6,
+        "{flat_z} sections z = const, {flat_x} x = const"
+    );
+    let mut n = 0;
+    for s in of(Role::Contour) {
+        for x in &s.source {
+            assert!(
+                x[1].abs() < 1e-9,
+                "contour vertex {x:?} off the plane y = 0"
+            );
+            let h = x[0] * x[0] - x[2] * x[2] - 1.0;
+            assert!(h.abs() < 0.05 * (1.0 + x[2] * x[2]), "contour vertex {x:?}");
+            n += 1;
+        }
+    }
+    assert!(n > 50, "{n}");
+    // Seen along its axis the cylinder x² + y² = 1 has no contour plane (A d = 0): no
+    // contour, but its sections are drawn.
+    let cyl = quadric([
+        [1.0, 0.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0, 0.0],
+        [0.0, 0.0, 0.0, -1.0],
+    ]);
+    let scene = draw(&[sphere([0.0; 3], 2.0), cyl], &View::horizontal());
+    let mine = |role: Role| {
+        scene
+            .strokes
+            .iter()
+            .filter(|s| s.role == role && s.object == Some(1))
+            .count()
+    };
+    assert_eq!(mine(Role::Contour), 0);
+    assert!(mine(Role::Net) > 10);
+}

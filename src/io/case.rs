@@ -65,6 +65,8 @@ pub struct Options {
     /// Also report the exact rationals of exact results (`"p/q"` strings).
     #[serde(default)]
     pub exact: bool,
+    /// The float path (`"default"`, `"bisection"`: ops::Method), checked when solved.
+    pub method: Option<String>,
 }
 
 /// One case, as parsed; objects are validated when the case is solved.

@@ -63,6 +63,9 @@ pub fn options(case: &Case) -> Result<Options, GeomError> {
         }
         out.chord_tolerance = Some(c.0);
     }
+    if let Some(m) = &o.method {
+        out.method = crate::ops::Method::parse(m)?;
+    }
     // Validated positive when the case was read; beyond ~10¹¹ years it is no limit.
     out.time_limit = o
         .time_limit

@@ -21,6 +21,7 @@
 pub mod algebraic;
 pub mod answer;
 pub mod beyond_range;
+pub mod bisection;
 pub mod blend_law;
 pub mod certified;
 pub mod classify;
@@ -50,8 +51,8 @@ pub use answer::{
 };
 pub use classify::{classify_point_polyhedron, ShellPoint, Side};
 pub use fillet::{chamfer, fillet, BlendSpec};
-pub use front::{classify, intersect, project};
-pub use options::{Options, ProjectOptions};
+pub use front::{classify, intersect, intersect_bisection_f64, project};
+pub use options::{Method, Options, ProjectOptions};
 pub use polyhedron::Polyhedron;
 pub use section::section;
 pub use shape::{Linear, LinearObject, Position, Shape};

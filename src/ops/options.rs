@@ -28,6 +28,36 @@ pub struct Options {
     /// The deadline of the call in progress, set by [`Options::started`] at the front
     /// door from `time_limit` (callers leave it `None`).
     pub deadline: Option<std::time::Instant>,
+    /// The float path that seeds the certifier (docs/FORMAT.md `options.method`).
+    pub method: Method,
+}
+
+/// The float path of an operation; whatever it is, the answer is certified the same
+/// way (the certifier proves or says `undecided`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Method {
+    /// The operation's own ladder (exact where the pair is algebraic, Newton seeded by
+    /// the walks otherwise).
+    #[default]
+    Default,
+    /// Curve ∩ surface with an implicit form by bisection on `F(x(σ))` (OPERATIONS.md
+    /// §13.4, [`crate::ops::bisection`]).
+    Bisection,
+}
+
+impl Method {
+    /// The method named `name` in `options.method`; an unknown name is an
+    /// `invalid_value` error on that field.
+    pub fn parse(name: &str) -> Result<Method, GeomError> {
+        match name {
+            "default" => Ok(Method::Default),
+            "bisection" => Ok(Method::Bisection),
+            other => Err(GeomError::InvalidValue {
+                field: "options.method".into(),
+                reason: format!("unknown method `{other}` (expected `default` or `bisection`)"),
+            }),
+        }
+    }
 }
 
 /// The largest `max_bits` accepted (`options.max_bits`): beyond it one Krawczyk step
@@ -47,6 +77,7 @@ impl Default for Options {
             chord_tolerance: None,
             time_limit: None,
             deadline: None,
+            method: Method::Default,
         }
     }
 }

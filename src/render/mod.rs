@@ -18,12 +18,16 @@
 //! 3. [`draw`]: SVG (with a title) and PNG (no text: no fonts are needed) through
 //!    plotters.
 //!
+//! An implicit `quadric` has no parameters: an ellipsoid is drawn as the named ellipsoid
+//! it is, any other quadric by plane sections inside the window ([`quadric`]).
+//!
 //! Plane cases (2D objects) are drawn in the plane itself (`X = x`, `Y = y`).
 
 pub mod contour;
 pub mod depth;
 pub mod draw;
 pub mod model;
+pub mod quadric;
 pub mod scene;
 
 pub use draw::{png, svg, RenderError};

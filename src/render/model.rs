@@ -363,7 +363,7 @@ fn plane_window(o: [f64; 3], u: [f64; 3], v: [f64; 3], w: Window) -> ([f64; 2], 
 }
 
 /// An orthonormal pair spanning the plane with this normal.
-fn plane_axes(n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+pub(super) fn plane_axes(n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
     let k = (0..3)
         .min_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs()))
         .unwrap_or(0);
@@ -402,6 +402,12 @@ pub fn model(input: &Input, opts: &RenderOptions) -> Result<Model, GeomError> {
             Shape::Surface(s) if !unbounded(s) => {
                 let dom = s.domain();
                 m.surface(i, s, dom, input, opts);
+            }
+            Shape::Quadric(q) => {
+                if let Some(e) = super::quadric::as_ellipsoid(q) {
+                    let s = AnySurface::Ellipsoid(e);
+                    m.surface(i, &s, s.domain(), input, opts);
+                }
             }
             Shape::Polyhedron(p) => {
                 let verts: Vec<[f64; 3]> = p
@@ -470,6 +476,22 @@ pub fn model(input: &Input, opts: &RenderOptions) -> Result<Model, GeomError> {
                     Some(i),
                     vec![add(&o, &d, ends.0), add(&o, &d, ends.1)],
                 );
+            }
+            Shape::Quadric(q) if super::quadric::as_ellipsoid(q).is_none() => {
+                let (net, contour) = super::quadric::sections(
+                    q,
+                    input.view,
+                    w.centre,
+                    1.25 * w.radius,
+                    opts.net,
+                    samples,
+                );
+                for pl in net {
+                    m.line(Role::Net, Some(i), pl);
+                }
+                for pl in contour {
+                    m.line(Role::Contour, Some(i), pl);
+                }
             }
             Shape::Conic2(c) => {
                 let k = c.coeffs();

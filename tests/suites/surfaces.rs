@@ -21,6 +21,8 @@ mod classify_polyhedron;
 mod composite_surface;
 #[path = "../curve_on_surface_exact.rs"]
 mod curve_on_surface_exact;
+#[path = "../intersect_bisection.rs"]
+mod intersect_bisection;
 #[path = "../intersect_curve_surface.rs"]
 mod intersect_curve_surface;
 #[path = "../motion_surfaces.rs"]

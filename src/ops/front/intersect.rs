@@ -14,7 +14,7 @@ use crate::ops::algebraic::pairs;
 use crate::ops::algebraic::space_conics;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
-use crate::ops::options::Options;
+use crate::ops::options::{Method, Options};
 use crate::ops::shape::{Linear, Shape};
 
 /// Every common point (or line, segment, coincidence) of two or three shapes,
@@ -36,6 +36,10 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
             _ => None,
         })
         .collect();
+    if opts.method == Method::Bisection {
+        // The float path of §13.4 instead of the ladder (the exact pairs included).
+        return super::bisection::intersect(shapes, opts);
+    }
     if let Some(linear) = linear {
         return linear::intersect(&linear, opts);
     }

@@ -18,7 +18,7 @@ use crate::ops::shape::{Linear, Shape};
 use crate::ops::space_curves::intersect_curve_curve;
 use crate::surface::AnySurface;
 
-fn field(i: usize) -> String {
+pub(super) fn field(i: usize) -> String {
     format!("objects[{i}]")
 }
 
@@ -32,7 +32,10 @@ fn unsupported(field: &str, reason: &str) -> GeomError {
 /// A space curve, or a line or segment as one; an unbounded line is cut to the part
 /// that can meet `bound` (a certified box of the other shape). `Ok(None)`: not a space
 /// curve.
-fn curve3(shape: &Shape, bound: Option<&[Interval; 3]>) -> Result<Option<AnyCurve3>, GeomError> {
+pub(super) fn curve3(
+    shape: &Shape,
+    bound: Option<&[Interval; 3]>,
+) -> Result<Option<AnyCurve3>, GeomError> {
     match shape {
         Shape::Curve(c) => Ok(Some(c.clone())),
         Shape::Linear(l) => l.to_curve3(|o, d| bound.and_then(|b| reach(o, d, b))),

@@ -8,6 +8,7 @@
 //! [`Certified`]: crate::Certified
 //! [`Answer`]: crate::ops::Answer
 
+mod bisection;
 mod classify;
 mod intersect;
 mod intersect_curved;
@@ -26,6 +27,7 @@ use crate::ops::beyond_range::exact_beyond_range;
 use crate::ops::options::{Options, ProjectOptions};
 use crate::ops::promise;
 use crate::ops::shape::{Position, Shape};
+pub use bisection::float_roots as intersect_bisection_f64;
 
 // Each entry point answers again with exact rationals when a number of its answer is
 // beyond the double range ([`exact_beyond_range`]), so no value is ever lost, and

@@ -35,5 +35,6 @@ pub use contour::{
 };
 pub use front::{contour, curves_answer, visibility, visibility_answer};
 pub use projection::{picture_axes, Rays, View};
+pub(crate) use ray::covers;
 pub use system::ContourFn;
 pub use visibility::{visibility_point_surface, Visibility, VisibilityAnswer};
