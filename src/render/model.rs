@@ -362,22 +362,6 @@ fn plane_window(o: [f64; 3], u: [f64; 3], v: [f64; 3], w: Window) -> ([f64; 2], 
     ([p - hu, p + hu], [q - hv, q + hv])
 }
 
-/// An orthonormal pair spanning the plane with this normal.
-pub(super) fn plane_axes(n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
-    let k = (0..3)
-        .min_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs()))
-        .unwrap_or(0);
-    let mut e = [0.0; 3];
-    e[k] = 1.0;
-    let u = crate::num::vector::cross(&n, &e);
-    let v = crate::num::vector::cross(&n, &u);
-    let unit = |a: [f64; 3]| {
-        let l = dot(&a, &a).sqrt();
-        a.map(|c| c / l)
-    };
-    (unit(u), unit(v))
-}
-
 /// Whether a surface's parameter rectangle is unbounded (only planes are).
 fn unbounded(s: &AnySurface) -> bool {
     let (u, v) = s.domain();
@@ -530,7 +514,7 @@ fn plane_frame(p: &crate::geom::Plane<f64>) -> ([f64; 3], [f64; 3], [f64; 3]) {
             let n = pad(normal.as_slice());
             let nn = dot(&n, &n);
             let o = n.map(|c| -d * c / nn);
-            let (u, v) = plane_axes(n);
+            let (u, v) = super::quadric::plane_axes(n);
             (o, u, v)
         }
     }

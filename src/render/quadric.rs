@@ -187,7 +187,7 @@ fn contour_plane(
     if nn.is_nan() || nn <= (1e-12 * size).powi(2) || !nn.is_finite() {
         return None;
     }
-    let (u, v) = super::model::plane_axes(n);
+    let (u, v) = plane_axes(n);
     let h = (dot(&n, &centre) + k) / nn;
     Some(SectionPlane {
         origin: std::array::from_fn(|i| centre[i] - h * n[i]),
@@ -195,6 +195,22 @@ fn contour_plane(
         v,
         half: radius,
     })
+}
+
+/// An orthonormal pair spanning the plane with this normal.
+pub(super) fn plane_axes(n: [f64; 3]) -> ([f64; 3], [f64; 3]) {
+    let k = (0..3)
+        .min_by(|&a, &b| n[a].abs().total_cmp(&n[b].abs()))
+        .unwrap_or(0);
+    let mut e = [0.0; 3];
+    e[k] = 1.0;
+    let u = crate::num::vector::cross(&n, &e);
+    let v = crate::num::vector::cross(&n, &u);
+    let unit = |a: [f64; 3]| {
+        let l = crate::num::vector::dot(&a, &a).sqrt();
+        a.map(|c| c / l)
+    };
+    (unit(u), unit(v))
 }
 
 #[cfg(test)]
