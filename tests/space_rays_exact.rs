@@ -73,6 +73,18 @@ struct Obj {
 }
 
 impl Obj {
+    /// The same object with its origin moved by one ulp in one coordinate.
+    fn nudged(&self, rng: &mut Rng) -> Obj {
+        let mut moved = *self;
+        let i = rng.below(3);
+        moved.o[i] = if rng.coin() {
+            moved.o[i].next_up()
+        } else {
+            moved.o[i].next_down()
+        };
+        moved
+    }
+
     /// The exact direction of the carrier (a segment's `b − a`).
     fn dq(&self) -> [Rational; 3] {
         match self.b {
@@ -220,13 +232,7 @@ fn crossing_rays_in_every_pairing() {
             other => panic!("{what}: inside = {inside}, answered {other:?}"),
         }
         // One ulp off: b's origin moved in one coordinate.
-        let mut moved = b;
-        let i = rng.below(3);
-        moved.o[i] = if rng.coin() {
-            moved.o[i].next_up()
-        } else {
-            moved.o[i].next_down()
-        };
+        let moved = b.nudged(&mut rng);
         let w: [Rational; 3] = std::array::from_fn(|k| q(moved.o[k]) - q(a.o[k]));
         let coplanar = dot(&w, &cross(&a.dq(), &moved.dq())) == 0;
         let r = run(&a.shape(), &moved.shape(), exact);
@@ -359,14 +365,8 @@ fn collinear_rays_in_every_pairing() {
             (truth, other) => panic!("{what}: common {truth:?}, answered {other:?}"),
         }
         // The second carrier moved by one ulp in one coordinate: parallel.
-        let mut moved = b;
-        let i = rng.below(3);
-        moved.o[i] = if rng.coin() {
-            moved.o[i].next_up()
-        } else {
-            moved.o[i].next_down()
-        };
-        let w: [Rational; 3] = std::array::from_fn(|j| q(moved.o[j]) - q(a.o[j]));
+        let moved = b.nudged(&mut rng);
+        let w: [Rational; 3] = std::array::from_fn(|k| q(moved.o[k]) - q(a.o[k]));
         let r = run(&a.shape(), &moved.shape(), exact);
         tally(&mut kinds, &r);
         // (A segment's moved end turns its carrier: then it is not parallel at all.)

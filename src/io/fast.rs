@@ -6,7 +6,7 @@
 //!
 //! The quick road only ever *accepts*: any case it does not take in full — another
 //! object type, a field it does not know, a duplicate key, a syntax error, a value of
-//! the wrong type — goes the careful road of [`super::case::read_chunk`] (strict
+//! the wrong type — goes the careful road of [`super::read_chunk`] (strict
 //! parse, path-tracking deserialisation), which alone writes error messages. So what
 //! the quick road returns must equal what the careful road would: the same serde
 //! types (`LineSpec`, ..., `Options`) read the same numbers from the same parser
@@ -45,6 +45,7 @@ struct QuickCase<'a> {
 
 /// The linear objects, by `type` (anywhere in the object). A `plane` with a `domain`
 /// is a surface: its unknown field sends it the careful road.
+#[allow(clippy::large_enum_variant)] // read once per object, then moved into ObjectSpec
 enum QuickObject {
     Line(LineSpec),
     Segment(SegmentSpec),

@@ -29,7 +29,7 @@ use crate::certify::System;
 use crate::curve::Curve;
 use crate::error::GeomError;
 use crate::num::Real;
-use crate::ops::certified::{certify_roots, curve_point, curve_unknowns, CertifiedPoint, Options};
+use crate::ops::certified::{certify_roots, curve_points, curve_unknowns, CertifiedPoint, Options};
 use crate::ops::float::Precision;
 use crate::surface::Implicit;
 
@@ -185,18 +185,7 @@ pub fn intersect_curve_implicit_bisection<C: Curve<3>, G: Implicit<3>>(
             .collect();
     let sys = CurveImplicitSystem { curve, g };
     let roots = certify_roots(&sys, &curve_unknowns(curve), &guesses, opts)?;
-    Ok(roots.map(|rs| {
-        rs.into_iter()
-            .map(|root| {
-                let (point, point_box) = curve_point(curve, root.params[0], &root.enclosure[0]);
-                CertifiedPoint {
-                    root,
-                    point,
-                    point_box,
-                }
-            })
-            .collect()
-    }))
+    Ok(curve_points(curve, roots))
 }
 
 #[cfg(test)]

@@ -3,7 +3,7 @@
 //! `solve_case`), with a small time limit applied as `--time-limit` would.
 
 use super::check;
-use geocert::io::case::read_chunk;
+use geocert::io::read_chunk;
 use geocert::io::stream::CaseStream;
 use geocert::io::{solve_case, verify_case, Double};
 

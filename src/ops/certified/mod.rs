@@ -420,6 +420,25 @@ pub fn curve_point<C: crate::curve::Curve<D>, const D: usize>(
     (p, b)
 }
 
+/// Roots in a curve's one parameter as points of the curve ([`curve_point`]).
+pub fn curve_points<C: crate::curve::Curve<D>, const D: usize>(
+    c: &C,
+    roots: Certified<Vec<CertifiedRoot>>,
+) -> Certified<Vec<CertifiedPoint<D>>> {
+    roots.map(|rs| {
+        rs.into_iter()
+            .map(|root| {
+                let (point, point_box) = curve_point(c, root.params[0], &root.enclosure[0]);
+                CertifiedPoint {
+                    root,
+                    point,
+                    point_box,
+                }
+            })
+            .collect()
+    })
+}
+
 /// A surface's point and its enclosure over the parameter box.
 pub fn surface_point<S: crate::surface::Surface>(
     s: &S,

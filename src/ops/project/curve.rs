@@ -174,9 +174,7 @@ pub fn project_point_curve<C: Curve<D>, const D: usize>(
     precision: &Precision,
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<D>>>, crate::GeomError> {
-    use crate::ops::certified::{
-        certify_roots, curve_point, curve_unknowns, pieces, CertifiedPoint,
-    };
+    use crate::ops::certified::{certify_roots, curve_points, curve_unknowns, pieces};
     let guesses: Vec<Vec<f64>> = match project_point_curve_f64(curve, p, samples, precision, false)
     {
         CurveFeet::Finite(f) => f.iter().map(|x| vec![x.t]).collect(),
@@ -208,16 +206,5 @@ pub fn project_point_curve<C: Curve<D>, const D: usize>(
             certify_roots(&sys, &curve_unknowns(curve), &guesses, opts)?
         }
     };
-    Ok(roots.map(|rs| {
-        rs.into_iter()
-            .map(|root| {
-                let (point, point_box) = curve_point(curve, root.params[0], &root.enclosure[0]);
-                CertifiedPoint {
-                    root,
-                    point,
-                    point_box,
-                }
-            })
-            .collect()
-    }))
+    Ok(curve_points(curve, roots))
 }
