@@ -118,9 +118,10 @@ pub(crate) fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<An
         }
     };
     let mut out = found.clone_with(Vec::new());
-    for cp in found.value {
+    let ts: Vec<_> = found.value.iter().map(|cp| cp.root.enclosure[0]).collect();
+    for (i, cp) in found.value.into_iter().enumerate() {
         let decided = match p.patch {
-            Some(s) if !whole => on_patch(s, &p.curve, cp, opts)?,
+            Some(s) if !whole => on_patch(s, &p.curve, cp, between(&ts, i), opts)?,
             _ => vec![(cp, 0)],
         };
         for (mut cp, n) in decided {
@@ -139,6 +140,27 @@ pub(crate) fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<An
     Ok(out.map(Answer::from_points))
 }
 
+/// Where the patch search around root `i` may look: the curve's domain cut halfway
+/// into the gaps to the neighbouring roots' enclosures (sorted, disjoint), so two
+/// roots of `g` closer than the search's widening (a near-tangency) never find each
+/// other's patch point — every point of the patch is a root of `g`, and the only
+/// root of `g` in this window is root `i`. The window always holds root `i`'s own
+/// enclosure, so its point is never cut off (overlapping enclosures are not cut).
+fn between(ts: &[crate::num::Interval], i: usize) -> (f64, f64) {
+    let mid = |a: f64, b: f64| if a < b { a + 0.5 * (b - a) } else { a };
+    let mut order: Vec<usize> = (0..ts.len()).collect();
+    order.sort_by(|&a, &b| ts[a].lo().total_cmp(&ts[b].lo()));
+    let k = order.iter().position(|&j| j == i).expect("i is a root");
+    // The window always holds root i's own enclosure (overlapping neighbours: no cut).
+    let lo = k
+        .checked_sub(1)
+        .map(|j| mid(ts[order[j]].hi(), ts[i].lo()).min(ts[i].lo()));
+    let hi = order
+        .get(k + 1)
+        .map(|&j| mid(ts[i].hi(), ts[j].lo()).max(ts[i].hi()));
+    (lo.unwrap_or(f64::NEG_INFINITY), hi.unwrap_or(f64::INFINITY))
+}
+
 /// One root of `g` decided on the patch `s` (module doc): the points found, each with
 /// the number of surface parameters in front of its curve parameter (2, or 0 when
 /// undecided and given as the root of `g` alone).
@@ -146,12 +168,16 @@ fn on_patch(
     s: &AnySurface,
     curve: &AnyCurve3,
     cp: CertifiedPoint<3>,
+    (lo, hi): (f64, f64),
     opts: &Options,
 ) -> Result<Vec<(CertifiedPoint<3>, usize)>, GeomError> {
     let t = cp.root.enclosure[0];
-    let (lo, hi) = crate::curve::Curve::domain(curve);
     let grow = t.width().max(1e-7 * t.mag().max(1.0));
-    let near = [(t.lo() - grow).max(lo), (t.hi() + grow).min(hi)];
+    let (d_lo, d_hi) = crate::curve::Curve::domain(curve);
+    let near = [
+        (t.lo() - grow).max(lo).max(d_lo),
+        (t.hi() + grow).min(hi).min(d_hi),
+    ];
     let unknowns = Unknowns::concat(&[
         surface_unknowns(s),
         Unknowns {
