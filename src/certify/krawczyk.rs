@@ -76,24 +76,40 @@ pub fn krawczyk<S: System, I: CertInterval>(sys: &S, x: &[I]) -> Krawczyk<I> {
 /// A fixed `m` over several steps avoids the jitter that re-rounding `F` at a moving
 /// midpoint adds when `F(m)`'s rounding dominates `K(X)`. `Inconclusive` if `m ∉ x`.
 pub fn krawczyk_about<S: System, I: CertInterval>(sys: &S, x: &[I], m: &[I]) -> Krawczyk<I> {
-    let n = x.len();
     if !boxes::is_subset(m, x) {
         return Krawczyk::Inconclusive;
     }
     let Some((_, j)) = smooth_jacobian(sys, x) else {
         return Krawczyk::Inconclusive;
     };
-    let gm: Vec<Guarded<I>> = m.iter().cloned().map(Guarded::new).collect();
-    let fm = sys.eval(&gm);
-    if fm.len() != n || !all_smooth(&fm) {
-        return Krawczyk::Inconclusive;
-    }
-    let Some(y) = I::approx_inverse(&mid_matrix(&j)) else {
+    let Some(fm) = value_at(sys, m) else {
         return Krawczyk::Inconclusive;
     };
-    let c = identity_minus_product(&y, &j);
-    let fm: Vec<I> = fm.into_iter().map(|g| g.value).collect();
-    let yf = mat_vec(&y, &fm);
+    krawczyk_with(x, m, &j, &fm)
+}
+
+/// `F(m)` at a point box `m`, if proven smooth there and of the system's size.
+pub fn value_at<S: System, I: CertInterval>(sys: &S, m: &[I]) -> Option<Vec<I>> {
+    let gm: Vec<Guarded<I>> = m.iter().cloned().map(Guarded::new).collect();
+    let fm = sys.eval(&gm);
+    if fm.len() != m.len() || !all_smooth(&fm) {
+        return None;
+    }
+    Some(fm.into_iter().map(|g| g.value).collect())
+}
+
+/// The Krawczyk step from its parts: the box `x`, the point `m ∈ x`, an interval
+/// matrix `j` of slopes over `x` (every `F(z) − F(m)`, `z ∈ x`, is `J̃ (z − m)` for some
+/// real `J̃` with rows in `j`: the Jacobian's enclosure of a `C¹` map, by the mean value
+/// theorem, or the hull of the pieces' Jacobians of a continuous piecewise-`C¹` map,
+/// [`super::joined`]) and `fm ∋ F(m)`.
+pub fn krawczyk_with<I: CertInterval>(x: &[I], m: &[I], j: &[Vec<I>], fm: &[I]) -> Krawczyk<I> {
+    let n = x.len();
+    let Some(y) = I::approx_inverse(&mid_matrix(j)) else {
+        return Krawczyk::Inconclusive;
+    };
+    let c = identity_minus_product(&y, j);
+    let yf = mat_vec(&y, fm);
     let d: Vec<I> = x.iter().zip(m).map(|(a, b)| a.clone() - b).collect();
     let cd = mat_vec(&c, &d);
     let k: IBox<I> = (0..n).map(|i| m[i].clone() - &yf[i] + &cd[i]).collect();

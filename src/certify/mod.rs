@@ -42,6 +42,7 @@ pub mod deflate;
 pub mod dual;
 pub mod graph;
 pub mod guarded;
+pub mod joined;
 pub mod krawczyk;
 mod ledger;
 pub mod level;

@@ -21,6 +21,7 @@ use crate::num::Interval;
 
 pub use crate::certify::Options;
 
+mod across;
 pub mod boundary;
 pub mod pieces;
 mod seam;
@@ -141,6 +142,39 @@ pub fn certify_roots_with<S: System>(
     opts: &Options,
     not_an_answer: impl Fn(&Root) -> bool,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
+    let found = find_roots(sys, unknowns, guesses, opts, not_an_answer)?;
+    let status = found
+        .roots
+        .iter()
+        .fold(Status::Verified, |s, r| s.weakest(r.status));
+    let mut reason = found.reason;
+    let undecided = found.roots.iter().any(|r| r.status == Status::Undecided);
+    if undecided {
+        reason.get_or_insert_with(|| "a root straddles the domain boundary".into());
+    }
+    let complete = found.searched && !undecided;
+    Ok(answer(found.roots, status, complete, found.bits, reason))
+}
+
+/// What a root search found, before the answer's status is set: the roots, whether
+/// the search itself covered the whole box (`searched`: nothing left but the roots'
+/// own undecided boxes), the precision used and the reason the search stopped short.
+pub(crate) struct Found {
+    pub roots: Vec<CertifiedRoot>,
+    pub searched: bool,
+    pub bits: u32,
+    pub reason: Option<String>,
+}
+
+/// The search of [`certify_roots_with`], without the answer's assembly (shared with
+/// the knot-span search of [`pieces`], which decides roots across knots before it).
+pub(crate) fn find_roots<S: System>(
+    sys: &S,
+    unknowns: &Unknowns,
+    guesses: &[Vec<f64>],
+    opts: &Options,
+    not_an_answer: impl Fn(&Root) -> bool,
+) -> Result<Found, GeomError> {
     let search = unknowns.search_box();
     let solved = certify::solve(sys, &search, opts)?;
     let mut roots: Vec<CertifiedRoot> = Vec::new();
@@ -162,7 +196,7 @@ pub fn certify_roots_with<S: System>(
             push_unique(&mut roots, root, unknowns);
         }
     }
-    let mut complete = solved.complete;
+    let complete = solved.complete;
     let mut bits = solved.bits;
     let mut reason = solved.reason.clone();
     if !complete {
@@ -211,15 +245,13 @@ pub fn certify_roots_with<S: System>(
             }
         }
     }
-    let status = roots
-        .iter()
-        .fold(Status::Verified, |s, r| s.weakest(r.status));
-    if roots.iter().any(|r| r.status == Status::Undecided) {
-        complete = false;
-        reason.get_or_insert_with(|| "a root straddles the domain boundary".into());
-    }
     seam::drop_seam_copies(sys, &mut roots, unknowns);
-    Ok(answer(roots, status, complete, bits, reason))
+    Ok(Found {
+        roots,
+        searched: complete,
+        bits,
+        reason,
+    })
 }
 
 /// The certified answer of a root search: the roots sorted by parameter, the largest

@@ -10,7 +10,12 @@
 //!   one, and a verified root inside the closed piece is a true root (unique there);
 //! * a root whose box straddles a piece end is placed by [`super::boundary`] (the exact
 //!   candidate at the knot first), as at a true end of the domain: proven inside the
-//!   closed piece it is an answer, proven outside it is the continuation's and dropped.
+//!   closed piece it is an answer, proven outside it is the continuation's and dropped;
+//! * a root exactly on a knot where no exact candidate exists (the other unknowns are
+//!   irrational there) stays undecided in both pieces; when the system is continuous
+//!   across the knot (a curve's point, not its derivative), it is proven across the
+//!   knot instead ([`super::across`], [`crate::certify::joined`]): one root in a box that
+//!   straddles the knot, which is all the answer needs.
 //!
 //! Every root of the true system lies in some closed piece, so the union is complete
 //! when every piece is. A root on a knot is found from both sides; the copies are
@@ -55,20 +60,24 @@ pub fn piece_unknowns(range: [f64; 2]) -> Unknowns {
 /// Every root over `whole`, solved piece by piece (module doc): `pieces` are the
 /// pinned systems with their unknowns, which tile `whole`; each gets an equal share
 /// of the box budget and the guesses lying in its closed box; `not_an_answer` as in
-/// [`super::certify_roots_with`].
+/// [`super::certify_roots_with`]. With `tiles` (the system is continuous across the
+/// tiles' common faces: it uses the objects' points, not their derivatives; the tiles
+/// are `pieces` themselves, or finer ones that also cut a NURBS patch at its knots), a
+/// root left undecided on a knot is proven across it ([`super::across`]).
 pub fn certify_roots_in_pieces<S: System>(
     pieces: &[(S, Unknowns)],
     whole: &Unknowns,
     guesses: &[Vec<f64>],
     opts: &Options,
     not_an_answer: &dyn Fn(&Root) -> bool,
+    tiles: Option<&[(S, Unknowns)]>,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
     let share = Options {
         max_boxes: (opts.max_boxes / pieces.len().max(1)).max(1),
         ..opts.clone()
     };
     let mut roots: Vec<CertifiedRoot> = Vec::new();
-    let (mut complete, mut bits, mut reason) = (true, 53, None);
+    let (mut searched, mut bits, mut reason) = (true, 53, None);
     for (sys, unknowns) in pieces {
         let mine: Vec<Vec<f64>> = guesses
             .iter()
@@ -79,18 +88,64 @@ pub fn certify_roots_in_pieces<S: System>(
             })
             .cloned()
             .collect();
-        let part = super::certify_roots_with(sys, unknowns, &mine, &share, not_an_answer)?;
-        complete &= part.complete;
+        let part = super::find_roots(sys, unknowns, &mine, &share, not_an_answer)?;
+        searched &= part.searched;
         bits = bits.max(part.bits);
         if reason.is_none() {
             reason = part.reason;
         }
         let before = roots.len();
-        for root in part.value {
-            merge(&mut roots, before, root, whole, &mut complete, &mut reason);
+        for root in part.roots {
+            merge(&mut roots, before, root, whole);
         }
     }
-    Ok(assemble(roots, complete, bits, reason))
+    Ok(finish(roots, tiles, whole, searched, bits, reason))
+}
+
+/// Every root of `sys` over `whole`, searched as one system (not split), whose roots
+/// left undecided on a face between two `tiles` (a knot line of a NURBS patch) are
+/// proven across it ([`super::across`]): `sys` must be continuous there, and equal to each
+/// tile's system on the tile.
+pub fn certify_roots_across<S: System>(
+    sys: &S,
+    tiles: &[(S, Unknowns)],
+    whole: &Unknowns,
+    guesses: &[Vec<f64>],
+    opts: &Options,
+) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
+    let found = super::find_roots(sys, whole, guesses, opts, |_| false)?;
+    let (searched, bits) = (found.searched, found.bits);
+    Ok(finish(
+        found.roots,
+        Some(tiles),
+        whole,
+        searched,
+        bits,
+        found.reason,
+    ))
+}
+
+/// The roots proven across `tiles` where given, then the answer: complete when the
+/// search covered the box and no root is undecided.
+fn finish<S: System>(
+    mut roots: Vec<CertifiedRoot>,
+    tiles: Option<&[(S, Unknowns)]>,
+    whole: &Unknowns,
+    searched: bool,
+    bits: u32,
+    mut reason: Option<String>,
+) -> Certified<Vec<CertifiedRoot>> {
+    if let Some(tiles) = tiles {
+        super::across::across(tiles, whole, &mut roots);
+    }
+    if let Some(r) = roots.iter().find(|r| r.status == Status::Undecided) {
+        reason.get_or_insert_with(|| {
+            r.reason
+                .clone()
+                .unwrap_or_else(|| "a root straddles the domain boundary".into())
+        });
+    }
+    assemble(roots, searched, bits, reason)
 }
 
 /// Add a root found in one piece: a copy of a kept root (one box inside the other,
@@ -98,35 +153,27 @@ pub fn certify_roots_in_pieces<S: System>(
 /// otherwise may hold the same root (on a knot) or another, so the two are joined into
 /// one undecided box (never reported as two verified roots). `roots[..earlier]` are
 /// those of the earlier pieces.
-fn merge(
-    roots: &mut Vec<CertifiedRoot>,
-    earlier: usize,
-    root: CertifiedRoot,
-    whole: &Unknowns,
-    complete: &mut bool,
-    reason: &mut Option<String>,
-) {
+fn merge(roots: &mut Vec<CertifiedRoot>, earlier: usize, root: CertifiedRoot, whole: &Unknowns) {
     let nested = roots.iter().any(|r| {
         shifted_inside(&root.enclosure, &r.enclosure, whole)
             || shifted_inside(&r.enclosure, &root.enclosure, whole)
     });
     let overlap = roots[..earlier.min(roots.len())]
         .iter()
-        .position(|r| meets_shifted(&root.enclosure, &r.enclosure, whole));
+        .enumerate()
+        .find_map(|(i, r)| shifted_to_meet(&root.enclosure, &r.enclosure, whole).map(|a| (i, a)));
     match overlap {
-        Some(i) if !nested => {
+        Some((i, shifted)) if !nested => {
             let r = &mut roots[i];
             r.enclosure = r
                 .enclosure
                 .iter()
-                .zip(&root.enclosure)
+                .zip(&shifted)
                 .map(|(a, b)| a.hull(b))
                 .collect();
             r.status = Status::Undecided;
             r.max_roots = r.max_roots.max(1) + root.max_roots.max(1);
             r.reason = Some("roots of two knot spans overlap at a knot".into());
-            *complete = false;
-            reason.get_or_insert_with(|| "roots of two knot spans overlap at a knot".into());
         }
         _ => push_unique(roots, root, whole),
     }
@@ -135,34 +182,43 @@ fn merge(
 /// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
 /// −P, P an enclosure of the period), meets `b` (a root on a seam found in two pieces
 /// at both ends of the period).
-fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
-    (0..a.len()).all(|i| {
-        let shifts = if whole.periodic[i] {
-            let p = whole.period(i);
-            vec![Interval::point(0.0), p, -p]
-        } else {
-            vec![Interval::point(0.0)]
-        };
-        shifts
-            .into_iter()
-            .any(|s| !(a[i] + s).intersection(&b[i]).is_empty())
-    })
+pub(super) fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
+    shifted_to_meet(a, b, whole).is_some()
+}
+
+/// `a` shifted as in [`meets_shifted`] so that it meets `b` (an enclosure of the
+/// shifted box), or `None`: the hull of the two is then the tight box across a seam,
+/// not the whole period.
+fn shifted_to_meet(a: &[Interval], b: &[Interval], whole: &Unknowns) -> Option<Vec<Interval>> {
+    (0..a.len())
+        .map(|i| {
+            let shifts = if whole.periodic[i] {
+                let p = whole.period(i);
+                vec![Interval::point(0.0), p, -p]
+            } else {
+                vec![Interval::point(0.0)]
+            };
+            shifts
+                .into_iter()
+                .map(|s| a[i] + s)
+                .find(|s| !s.intersection(&b[i]).is_empty())
+        })
+        .collect()
 }
 
 /// The answer of the pieces together, with the status and completeness rules of
-/// [`super::certify_roots_with`].
+/// [`super::certify_roots_with`]: complete when every piece was searched and no root
+/// is undecided.
 fn assemble(
     roots: Vec<CertifiedRoot>,
-    mut complete: bool,
+    searched: bool,
     bits: u32,
     reason: Option<String>,
 ) -> Certified<Vec<CertifiedRoot>> {
     let status = roots
         .iter()
         .fold(Status::Verified, |s, r| s.weakest(r.status));
-    if roots.iter().any(|r| r.status == Status::Undecided) {
-        complete = false;
-    }
+    let complete = searched && roots.iter().all(|r| r.status != Status::Undecided);
     super::answer(roots, status, complete, bits, reason)
 }
 
@@ -229,4 +285,37 @@ pub fn surface_parts<'a, S: Surface>(
             .collect(),
         None => vec![(s, super::surface_unknowns(s))],
     }
+}
+
+/// The tiles of a curve–surface system for [`across`]: every knot rectangle of the
+/// surface (or the whole surface) with every piece of the curve (or the whole curve),
+/// the surface's two unknowns first. `system` builds the system of a surface and a
+/// curve.
+pub fn surface_curve_tiles<'a, Sf: Surface, C: Curve<3>, S>(
+    surface: &'a Sf,
+    spieces: &'a Option<SurfacePieces<Sf>>,
+    curve_parts: &[(&'a C, Unknowns)],
+    system: impl Fn(&'a Sf, &'a C) -> S,
+) -> Vec<(S, Unknowns)> {
+    let surface_parts: Vec<(&Sf, Unknowns)> = match spieces {
+        Some(parts) => parts
+            .iter()
+            .map(|(s, [u, v])| {
+                let unknowns = Unknowns {
+                    domain: vec![*u, *v],
+                    periodic: vec![false, false],
+                    rounded: vec![false, false],
+                };
+                (s, unknowns)
+            })
+            .collect(),
+        None => vec![(surface, super::surface_unknowns(surface))],
+    };
+    let mut tiles = Vec::new();
+    for (s, us) in &surface_parts {
+        for (c, uc) in curve_parts {
+            tiles.push((system(s, c), Unknowns::concat(&[us.clone(), uc.clone()])));
+        }
+    }
+    tiles
 }

@@ -256,7 +256,14 @@ pub fn intersect_curve2_curve2<A: Curve<2>, B: Curve<2>>(
                 systems.push((CurveCurve2System { a, b }, u));
             }
         }
-        pieces::certify_roots_in_pieces(&systems, &unknowns, &guesses, opts, &|_| false)?
+        pieces::certify_roots_in_pieces(
+            &systems,
+            &unknowns,
+            &guesses,
+            opts,
+            &|_| false,
+            Some(&systems), // the system uses the curves' points only: continuous
+        )?
     } else {
         certify_roots(&CurveCurve2System { a, b }, &unknowns, &guesses, opts)?
     };

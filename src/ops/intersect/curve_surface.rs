@@ -382,18 +382,38 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
             .collect();
     let unknowns = Unknowns::concat(&[surface_unknowns(surface), curve_unknowns(curve)]);
     let pinned = pieces::curve_pieces(curve);
+    let spieces = pieces::surface_pieces(surface);
+    let system = |surface, curve| CurveSurfaceSystem { surface, curve };
+    // The system uses the points of both objects only, so it is continuous across
+    // knots: roots left undecided on a knot (line) are proven across it (issue 21).
+    let tiles = pieces::surface_curve_tiles(
+        surface,
+        &spieces,
+        &pieces::curve_parts(curve, &pinned),
+        system,
+    );
     let roots = if pinned.is_some() {
         // A NURBS curve: span by span (issue 21, [`pieces`]). The surface is not split
-        // (knot rectangles of a NURBS patch are not yet used here: the shared box
-        // budget ran out on the NURBS torus).
+        // for the search (knot rectangles of a NURBS patch each with a share of the box
+        // budget ran out of it on the NURBS torus), only for proofs across its knots.
         let systems: Vec<_> = pieces::curve_parts(curve, &pinned)
             .into_iter()
             .map(|(curve, uc)| {
                 let u = Unknowns::concat(&[surface_unknowns(surface), uc]);
-                (CurveSurfaceSystem { surface, curve }, u)
+                (system(surface, curve), u)
             })
             .collect();
-        pieces::certify_roots_in_pieces(&systems, &unknowns, &guesses, opts, &|_| false)?
+        pieces::certify_roots_in_pieces(
+            &systems,
+            &unknowns,
+            &guesses,
+            opts,
+            &|_| false,
+            Some(&tiles),
+        )?
+    } else if spieces.is_some() {
+        let sys = system(surface, curve);
+        pieces::certify_roots_across(&sys, &tiles, &unknowns, &guesses, opts)?
     } else {
         let sys = CurveSurfaceSystem { surface, curve };
         certify_roots(&sys, &unknowns, &guesses, opts)?

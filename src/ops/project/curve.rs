@@ -199,6 +199,7 @@ pub fn project_point_curve<C: Curve<D>, const D: usize>(
                 &guesses,
                 opts,
                 &|_| false,
+                None, // the foot equation uses c′, which jumps at a C⁰ knot
             )?
         }
         None => {

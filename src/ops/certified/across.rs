@@ -1,0 +1,292 @@
+//! Roots on a knot, proven across it (issue 21; [`super::pieces`] module doc).
+//!
+//! A root left undecided where its box straddles a face between tiles (a knot of a
+//! NURBS curve, a knot line of a patch) is proven by Krawczyk over the whole box with
+//! the hull of the tiles' Jacobians ([`crate::certify::joined`]): the system must be
+//! continuous there (the caller's obligation: it uses the objects' points only).
+//!
+//! **Stretching.** At a knot where the curve is only `G¹` (a NURBS circle's knot
+//! between arcs of different weights) the speed jumps by a factor `λ`, and the hull of
+//! the two Jacobians' columns, taken component by component, is too wide for Krawczyk
+//! to contract. So the knot's coordinate is re-parametrised on the far side by a
+//! linear map `x = b + ρ (s − b)` (`ρ ≈ 1/λ`, a double: any `ρ > 0` gives a
+//! homeomorphism of the box, and the map is evaluated in the interval arithmetic of
+//! the system, so the stretched system is still continuous and piecewise `C¹`, and
+//! its parts' Jacobians are the true ones times `ρ` in that column). Its zeros are the
+//! original zeros mapped by `s ↦ x`; the enclosure is mapped back outward.
+
+use super::pieces::meets_shifted;
+use super::{shifted_inside, CertifiedRoot, Unknowns};
+use crate::certificate::Status;
+use crate::certify::{joined, System};
+use crate::num::round::{next_down, next_up};
+use crate::num::{Interval, Real};
+
+/// A knot `b` in coordinate `i`, with the far side (`x_i ≥ b`) stretched by `rho`.
+#[derive(Debug, Clone, Copy)]
+struct Cut {
+    i: usize,
+    b: f64,
+    rho: f64,
+}
+
+/// A tile's system seen through the stretch: on a tile beyond the cut (`far`),
+/// `x_i = b + ρ (s_i − b)`; elsewhere `x = s`.
+struct Stretched<'a, S> {
+    sys: &'a S,
+    cut: Option<Cut>,
+}
+
+impl<S: System> Stretched<'_, S> {
+    fn to_x<T: Real>(&self, s: &[T]) -> Vec<T> {
+        let mut x = s.to_vec();
+        if let Some(c) = self.cut {
+            let b = s[c.i].lift(c.b);
+            x[c.i] = b.clone() + &((s[c.i].clone() - &b) * &s[c.i].lift(c.rho));
+        }
+        x
+    }
+}
+
+impl<S: System> System for Stretched<'_, S> {
+    fn dim(&self) -> usize {
+        self.sys.dim()
+    }
+    fn eval<T: Real>(&self, s: &[T]) -> Vec<T> {
+        self.sys.eval(&self.to_x(s))
+    }
+    /// The inner system's Jacobian at the mapped point, column `i` times `ρ` (the
+    /// chain rule for a linear map; exact in the interval arithmetic of `T`).
+    fn eval_with_jacobian<T: Real>(&self, s: &[T]) -> (Vec<T>, Vec<Vec<T>>) {
+        let (f, mut j) = self.sys.eval_with_jacobian(&self.to_x(s));
+        if let Some(c) = self.cut {
+            for row in &mut j {
+                if let Some(v) = row.get_mut(c.i) {
+                    *v = v.clone() * &s[c.i].lift(c.rho);
+                }
+            }
+        }
+        (f, j)
+    }
+}
+
+/// Roots left undecided where they straddle a face between `tiles`, proven across it
+/// (module doc). Every other root whose box lies inside the proven region is that root
+/// and is dropped; if another box meets the region without lying inside it, the root
+/// is left as it was (the two might be one root reported twice).
+pub fn across<S: System>(
+    tiles: &[(S, Unknowns)],
+    whole: &Unknowns,
+    roots: &mut Vec<CertifiedRoot>,
+) {
+    let mut i = 0;
+    while i < roots.len() {
+        if roots[i].status != Status::Undecided {
+            i += 1;
+            continue;
+        }
+        let Some((region, e)) = prove(tiles, whole, &roots[i].enclosure) else {
+            i += 1;
+            continue;
+        };
+        let clash = roots.iter().enumerate().any(|(k, r)| {
+            k != i
+                && meets_shifted(&r.enclosure, &region, whole)
+                && !shifted_inside(&r.enclosure, &region, whole)
+        });
+        if clash {
+            i += 1;
+            continue;
+        }
+        let old = &roots[i];
+        let params = old
+            .params
+            .iter()
+            .zip(&e)
+            .map(|(&p, b)| if b.contains(p) { p } else { b.midpoint() })
+            .collect();
+        let root = CertifiedRoot {
+            params,
+            enclosure: e,
+            status: Status::Verified,
+            max_roots: 1,
+            bits: old.bits.max(53),
+            perturbation: None,
+            reason: None,
+        };
+        roots.retain(|r| !shifted_inside(&r.enclosure, &region, whole));
+        roots.push(root);
+        i = 0; // the list changed: look again from the start
+    }
+}
+
+/// One root proven in a region around `start`: `(region, enclosure)` in the original
+/// coordinates, or `None`.
+fn prove<S: System>(
+    tiles: &[(S, Unknowns)],
+    whole: &Unknowns,
+    start: &[Interval],
+) -> Option<(Vec<Interval>, Vec<Interval>)> {
+    if !covered(tiles, whole, start) {
+        return None;
+    }
+    let cut = stretch(tiles, start);
+    let parts_of = |s: &[Interval]| -> Vec<(Stretched<S>, Vec<Interval>)> {
+        let x = to_x(cut, s);
+        if !covered(tiles, whole, &x) {
+            return Vec::new(); // the tiles do not cover the box: no theorem applies
+        }
+        let meets = |u: &Unknowns| {
+            x.iter().enumerate().all(|(i, xi)| {
+                u.periodic[i] || (xi.lo() <= u.domain[i][1] && u.domain[i][0] <= xi.hi())
+            })
+        };
+        if let Some(c) = cut {
+            // Only the two tiles on either side of the knot may be met in its
+            // coordinate: the stretched ranges of tiles further on are not computed.
+            let beyond = tiles.iter().any(|(_, u)| {
+                !u.periodic[c.i] && meets(u) && u.domain[c.i][0] != c.b && u.domain[c.i][1] != c.b
+            });
+            if beyond {
+                return Vec::new();
+            }
+        }
+        tiles
+            .iter()
+            .filter_map(|(sys, u)| {
+                let far = cut.filter(|c| !u.periodic[c.i] && u.domain[c.i][0] >= c.b);
+                let part: Option<Vec<Interval>> = s
+                    .iter()
+                    .enumerate()
+                    .map(|(i, si)| {
+                        let p = if u.periodic[i] {
+                            *si
+                        } else {
+                            let [lo, hi] = u.domain[i];
+                            let range = match cut {
+                                // the far tile's range in s: [b, b + (hi − b)/ρ] (its
+                                // upper end is never reached: x stays below hi)
+                                Some(c) if c.i == i && far.is_some() => Interval::from_bounds(
+                                    c.b,
+                                    to_s_far(c, Interval::point(hi)).hi(),
+                                ),
+                                _ => Interval::from_bounds(lo, hi),
+                            };
+                            si.intersection(&range)
+                        };
+                        (!p.is_empty()).then_some(p)
+                    })
+                    .collect();
+                part.map(|p| (Stretched { sys, cut: far }, p))
+            })
+            .collect()
+    };
+    let s0 = to_s(cut, start);
+    let (region, e) = joined::verify_in_parts(&parts_of, &s0, 6)?;
+    Some((to_x(cut, &region), to_x(cut, &e)))
+}
+
+/// The cut to stretch at: the one knot (a tile face) strictly inside `start` in a
+/// coordinate the tiles restrict, with `ρ` the ratio of the near and far tiles'
+/// Jacobian columns there (f64; `None` without exactly one such knot, or when the
+/// ratio is not a positive finite number).
+fn stretch<S: System>(tiles: &[(S, Unknowns)], start: &[Interval]) -> Option<Cut> {
+    let mid: Vec<f64> = start.iter().map(Interval::midpoint).collect();
+    let mut found = None;
+    for i in 0..start.len() {
+        let mut faces: Vec<f64> = tiles
+            .iter()
+            .filter(|(_, u)| !u.periodic[i])
+            .map(|(_, u)| u.domain[i][0])
+            .filter(|&b| start[i].lo() < b && b < start[i].hi())
+            .collect();
+        faces.sort_by(f64::total_cmp);
+        faces.dedup();
+        if faces.len() != 1 || found.is_some() {
+            if !faces.is_empty() {
+                return None; // two knots in the box, or cuts in two coordinates
+            }
+            continue;
+        }
+        let b = faces[0];
+        let mut at = mid.clone();
+        at[i] = b;
+        let column = |side: &dyn Fn(&Unknowns) -> bool| -> Option<f64> {
+            let (sys, _) = tiles.iter().find(|(_, u)| {
+                side(u)
+                    && u.domain
+                        .iter()
+                        .zip(&at)
+                        .enumerate()
+                        .all(|(k, ([lo, hi], x))| u.periodic[k] || (lo <= x && x <= hi))
+            })?;
+            let j = sys.jacobian::<f64>(&at);
+            Some(j.iter().map(|r| r[i] * r[i]).sum::<f64>().sqrt())
+        };
+        let near = column(&|u: &Unknowns| u.domain[i][1] <= b)?;
+        let far = column(&|u: &Unknowns| u.domain[i][0] >= b)?;
+        let rho = near / far;
+        if !(rho.is_finite() && rho > 0.0) {
+            return None;
+        }
+        found = Some(Cut { i, b, rho });
+    }
+    found
+}
+
+/// `s` mapped to `x` (outward): the near side as it is, the far side
+/// `b + ρ (s − b)`, hulled.
+fn to_x(cut: Option<Cut>, s: &[Interval]) -> Vec<Interval> {
+    let mut x = s.to_vec();
+    if let Some(c) = cut {
+        let near = s[c.i].intersection(&Interval::from_bounds(f64::NEG_INFINITY, c.b));
+        let far = s[c.i].intersection(&Interval::from_bounds(c.b, f64::INFINITY));
+        let b = Interval::point(c.b);
+        let far = if far.is_empty() {
+            far
+        } else {
+            b + (far - b) * Interval::point(c.rho)
+        };
+        x[c.i] = near.hull(&far);
+    }
+    x
+}
+
+/// `x` mapped to `s` (outward): the inverse of [`to_x`].
+fn to_s(cut: Option<Cut>, x: &[Interval]) -> Vec<Interval> {
+    let mut s = x.to_vec();
+    if let Some(c) = cut {
+        let near = x[c.i].intersection(&Interval::from_bounds(f64::NEG_INFINITY, c.b));
+        let far = x[c.i].intersection(&Interval::from_bounds(c.b, f64::INFINITY));
+        let far = if far.is_empty() {
+            far
+        } else {
+            to_s_far(c, far)
+        };
+        s[c.i] = near.hull(&far);
+    }
+    s
+}
+
+/// A far-side `x` interval in `s`: `b + (x − b)/ρ`, outward.
+fn to_s_far(c: Cut, x: Interval) -> Interval {
+    let b = Interval::point(c.b);
+    b + (x - b) / Interval::point(c.rho)
+}
+
+/// The tiles cover `x`, and `x` lies in the domain: in every coordinate that is not
+/// periodic, or that some tile restricts (a pinned piece: the tiles tile one period),
+/// `x` lies in `whole`'s range (one ulp inside a rounded bound, whose exact value is
+/// within one ulp of the double). A root proven in such an `x` is an answer.
+fn covered<S>(tiles: &[(S, Unknowns)], whole: &Unknowns, x: &[Interval]) -> bool {
+    x.iter().enumerate().all(|(i, xi)| {
+        let cut = tiles.iter().any(|(_, u)| !u.periodic[i]);
+        let [lo, hi] = whole.domain[i];
+        let [lo, hi] = if whole.rounded[i] {
+            [next_up(lo), next_down(hi)]
+        } else {
+            [lo, hi]
+        };
+        (whole.periodic[i] && !cut) || (lo <= xi.lo() && xi.hi() <= hi)
+    })
+}
