@@ -42,6 +42,10 @@ pub(crate) fn curve_overlap(
     deadline: Option<std::time::Instant>,
 ) -> Option<Certified<Answer>> {
     let (ea, eb) = (exact(a)?, exact(b)?);
+    let dim = |c: &ExactCurve| c.pieces.first().map(|p| p.nums.len());
+    if dim(&ea) != dim(&eb) {
+        return None; // a plane curve against a space curve: refused by the front door
+    }
     let (da, db) = (ends(&ea)?, ends(&eb)?);
     let mut pairs: Vec<(Rational, Rational)> = Vec::new();
     let mut add = |t: Rational, s: Rational| {
