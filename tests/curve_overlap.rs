@@ -22,7 +22,7 @@ type Poly = Vec<Vec<Rational>>;
 fn lerp(a: &[Rational], b: &[Rational], t: &Rational) -> Vec<Rational> {
     a.iter()
         .zip(b)
-        .map(|(x, y)| Rational::from(x * (Rational::from(1) - t)) + Rational::from(y * t))
+        .map(|(x, y)| x * (Rational::from(1) - t) + Rational::from(y * t))
         .collect()
 }
 

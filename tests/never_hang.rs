@@ -222,7 +222,7 @@ fn nudged_family(rng: &mut Rng, i: usize, dim: usize) -> (Value, Value) {
     p[j][k] = magnitude(rng, 0) * huge;
     let t = if dim == 2 { "bezier2" } else { "bezier" };
     let mut c = json!({"type": t, "points": p});
-    let weighted = i % 3 != 0;
+    let weighted = !i.is_multiple_of(3);
     if weighted {
         let w: Vec<f64> = (0..n).map(|_| magnitude(rng, 30).abs()).collect();
         c["weights"] = json!(w);
