@@ -183,20 +183,97 @@ fn a_deadline_already_passed_ends_every_hard_case() {
 #[test]
 fn a_box_budget_of_one_ends_every_hard_case() {
     let mut rng = Rng::new(2022);
-    // The curve pairs (every third pair): surfaces spend their float stage, which no
-    // box budget bounds, before the first box.
-    for (a, b) in hard_pairs(&mut rng, 90).into_iter().step_by(3) {
+    // Every pair, surfaces too: the float stage of surface ∩ surface spends at most
+    // 64 units of work per box of `max_boxes` (iso-curves, guesses, march points,
+    // contact seeds), so a budget of one box ends it at once.
+    for (i, (a, b)) in hard_pairs(&mut rng, 90).into_iter().enumerate() {
         let case = intersect(&a, &b, json!({"max_boxes": 1, "time_limit": 30}));
         let r = run(&case);
         assert_ne!(r["status"], "error", "{case}: {r}");
         if r["complete"] != true {
             let reason = r["reason"].as_str().unwrap_or("");
             assert!(
-                ["box budget", "time limit reached", "precision cap"]
+                ["box budget", "precision cap", "suspected overlap"]
                     .iter()
                     .any(|l| reason.contains(l)),
                 "{case}: {r}"
             );
         }
+        if i % 3 == 2 && r["kind"] == "curves" && r["complete"] != true {
+            // A surface pair whose float stage stopped on the budget says so.
+            let reason = r["reason"].as_str().unwrap_or("");
+            assert!(reason.contains("box budget"), "{case}: {r}");
+        }
+    }
+}
+
+/// A Bézier curve of degree 1–6 with one control point near `1e30` or `1e-30` (of
+/// either sign, in either coordinate), polynomial or with weights `1e±30`, against a
+/// copy with one number moved by one ulp: a control point coordinate (the huge one or
+/// another) or a weight. The copies run together along their whole length, so the
+/// subdivision of the parameter square finds common points in every box along the
+/// diagonal (issue 20: 2.3 s past a 0.25 s limit, most of it clustering those boxes
+/// after the deadline).
+fn nudged_family(rng: &mut Rng, i: usize, dim: usize) -> (Value, Value) {
+    let n = 2 + i % 6;
+    let mut p = points(rng, n, dim, 2);
+    let (j, k) = (rng.below(n), rng.below(dim));
+    let huge = if rng.coin() { 1e30 } else { 1e-30 };
+    p[j][k] = magnitude(rng, 0) * huge;
+    let t = if dim == 2 { "bezier2" } else { "bezier" };
+    let mut c = json!({"type": t, "points": p});
+    let weighted = !i.is_multiple_of(3);
+    if weighted {
+        let w: Vec<f64> = (0..n).map(|_| magnitude(rng, 30).abs()).collect();
+        c["weights"] = json!(w);
+    }
+    let mut d = c.clone();
+    let up = |x: f64| f64::from_bits(x.to_bits() + 1);
+    match i % 4 {
+        0 => d["points"][j][k] = json!(up(p[j][k])),
+        1 if weighted => {
+            let m = rng.below(n);
+            let w = d["weights"][m].as_f64().unwrap();
+            d["weights"][m] = json!(up(w));
+        }
+        _ => {
+            let (m, l) = (rng.below(n), rng.below(dim));
+            d["points"][m][l] = json!(up(p[m][l]));
+        }
+    }
+    (c, d)
+}
+
+#[test]
+fn a_one_ulp_copy_with_a_huge_control_point_ends_decided_or_at_its_limit() {
+    let mut rng = Rng::new(2023);
+    for i in 0..48 {
+        let (c, d) = nudged_family(&mut rng, i, 2 + (i / 6) % 2);
+        let case = intersect(&c, &d, json!({"time_limit": 0.25}));
+        let r = run(&case);
+        assert_ne!(r["status"], "error", "{case}: {r}");
+        if r["complete"] == true {
+            continue;
+        }
+        let reason = r["reason"].as_str().unwrap_or("");
+        assert!(
+            [
+                "time limit reached",
+                "box budget",
+                "suspected overlap",
+                "precision cap"
+            ]
+            .iter()
+            .any(|l| reason.contains(l)),
+            "{case}: {r}"
+        );
+        if reason.contains("suspected overlap") {
+            // Never a list of float points along the suspected arc.
+            assert_eq!(r["status"], "undecided", "{case}: {r}");
+            assert_eq!(r["points"].as_array().map_or(0, Vec::len), 0, "{case}: {r}");
+        }
+        // And with the deadline already passed, the limit is what stops it.
+        let late = intersect(&c, &d, json!({"time_limit": 1e-300}));
+        decided_or_stopped_by(&late, &run(&late), "time limit reached");
     }
 }

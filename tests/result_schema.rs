@@ -350,6 +350,26 @@ fn ray_records_fit_the_schema() {
 }
 
 #[test]
+fn arc_records_fit_the_schema() {
+    let (schemas, index) = schema();
+    let cases = [
+        // a half of the other's de Casteljau split, in the plane and in space
+        r#"{"op": "intersect", "objects": [{"type": "bezier2", "points": [[0,0],[2,4],[4,0]]}, {"type": "bezier2", "points": [[0,0],[1,2],[2,2]]}]}"#,
+        r#"{"op": "intersect", "objects": [{"type": "bezier", "points": [[0,0,0],[2,4,1],[4,0,2]]}, {"type": "bezier", "points": [[2,2,1],[3,2,1.5],[4,0,2]]}]}"#,
+    ];
+    for case in cases {
+        let mut read = geocert::io::read_cases(case);
+        let r = serde_json::to_value(geocert::io::solve_case(read.remove(0))).unwrap();
+        assert_eq!(r["kind"], "arc", "{r}");
+        assert!(schemas.validate(&r, index).is_ok(), "{r}");
+        let bare = mutated(&r, |r| drop(r.as_object_mut().unwrap().remove("arc")));
+        assert!(schemas.validate(&bare, index).is_err(), "{bare}");
+        let other = mutated(&r, |r| r["kind"] = json!("segment"));
+        assert!(schemas.validate(&other, index).is_err(), "{other}");
+    }
+}
+
+#[test]
 fn blend_records_fit_the_schema() {
     let (schemas, index) = schema();
     let cases = [

@@ -14,7 +14,7 @@ use super::deflate::DoubleRoot;
 use super::krawczyk::{krawczyk, Krawczyk, VerifiedRoot};
 use super::ledger::Ledger;
 use super::level::{box_at, box_to_mpfr, CertInterval};
-use super::subdivide::{clusters, subdivide};
+use super::subdivide::{clusters_until, subdivide};
 use super::system::{check_domain, check_system, System};
 use super::{Options, Solutions};
 use crate::certificate::Certified;
@@ -56,7 +56,9 @@ fn decide<S: System>(sys: &S, bxs: Vec<Vec<MpfrInterval>>, level: usize, ledger:
     } else {
         run::<S, MpfrInterval>(sys, bxs, bits, ledger)
     };
-    for cluster in clusters(stuck) {
+    // Past the deadline many boxes left are one undecided region (issue 20).
+    let groups = clusters_until(stuck, &|| ledger.late());
+    for cluster in groups.into_iter().filter(|c| !c.is_empty()) {
         let hull = cluster[1..]
             .iter()
             .fold(cluster[0].clone(), |h, x| boxes::hull(&h, x));

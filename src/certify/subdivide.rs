@@ -113,6 +113,18 @@ fn krawczyk_test<S: System, I: CertInterval>(
 /// Group boxes into clusters of boxes that touch (closed boxes sharing a point), by a
 /// sweep along the coordinate where the boxes spread most.
 pub fn clusters<I: IntervalLike>(bxs: Vec<IBox<I>>) -> Vec<Vec<IBox<I>>> {
+    clusters_until(bxs, &|| false)
+}
+
+/// [`clusters`] that gives up once `stop` says so (asked every 256 boxes of the sweep;
+/// issue 20): then all the boxes are one cluster, a coarser grouping that is still
+/// sound (a cluster is a union of touching groups). The sweep is quadratic where many
+/// boxes share a coordinate range — thousands of undecided boxes along the common
+/// arc of two nearly overlapping curves took seconds after the deadline had passed.
+pub fn clusters_until<I: IntervalLike>(
+    bxs: Vec<IBox<I>>,
+    stop: &dyn Fn() -> bool,
+) -> Vec<Vec<IBox<I>>> {
     let count = bxs.len();
     if count == 0 {
         return Vec::new();
@@ -143,6 +155,9 @@ pub fn clusters<I: IntervalLike>(bxs: Vec<IBox<I>>) -> Vec<Vec<IBox<I>>> {
         i
     }
     for (pos, &i) in order.iter().enumerate() {
+        if pos % 256 == 255 && stop() {
+            return vec![bxs];
+        }
         for &j in &order[pos + 1..] {
             if bxs[j][axis].inf() > bxs[i][axis].sup() {
                 break;

@@ -156,6 +156,12 @@ pub fn result(id: serde_json::Value, c: &Certified<Answer>) -> CaseResult {
                 b: point(&s.b),
             })
         }
+        Answer::Arc(s) => {
+            r.arc = Some(SegmentOut {
+                a: point(&s.a),
+                b: point(&s.b),
+            })
+        }
         Answer::Ray(ray) => {
             r.ray = Some(RayOut {
                 start: point(&ray.start),

@@ -246,6 +246,9 @@ pub struct CaseResult {
     pub line: Option<LineOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub segment: Option<SegmentOut>,
+    /// Kind `arc`: the arc two curves share, its ends `a` and `b` (issue 20).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub arc: Option<SegmentOut>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub ray: Option<RayOut>,
     /// Kind `curves`: the intersection curves.
@@ -307,6 +310,7 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            arc: None,
             ray: None,
             curves: None,
             singular_points: None,
@@ -339,6 +343,7 @@ impl CaseResult {
             points: None,
             line: None,
             segment: None,
+            arc: None,
             ray: None,
             curves: None,
             singular_points: None,

@@ -265,6 +265,9 @@ pub enum Answer {
     Segment(SegmentAnswer),
     /// A ray (collinear objects overlapping in a ray, a ray lying in a plane).
     Ray(RayAnswer),
+    /// Two curves sharing an arc (issue 20): the arc of both from `a` to `b`, each end
+    /// with its parameters on both curves (the format of a segment, not straight).
+    Arc(SegmentAnswer),
     /// Three coincident planes.
     Plane,
     /// The two shapes coincide.
@@ -290,6 +293,7 @@ impl Answer {
             Answer::Points(_) => "points",
             Answer::Line(_) => "line",
             Answer::Segment(_) => "segment",
+            Answer::Arc(_) => "arc",
             Answer::Ray(_) => "ray",
             Answer::Plane => "plane",
             Answer::Coincident => "coincident",

@@ -39,7 +39,7 @@ fn line_beyond_range(l: &LineAnswer) -> bool {
 fn points_mut(a: &mut Answer) -> Vec<&mut Point> {
     match a {
         Answer::Points(p) => p.iter_mut().collect(),
-        Answer::Segment(s) => vec![&mut s.a, &mut s.b],
+        Answer::Segment(s) | Answer::Arc(s) => vec![&mut s.a, &mut s.b],
         Answer::Ray(r) => vec![&mut r.start],
         Answer::Side(_, Some(p)) => vec![p],
         _ => vec![],
@@ -50,7 +50,7 @@ fn points_mut(a: &mut Answer) -> Vec<&mut Point> {
 pub fn answer_beyond_range(a: &Answer) -> bool {
     match a {
         Answer::Points(p) => p.iter().any(point_beyond_range),
-        Answer::Segment(s) => point_beyond_range(&s.a) || point_beyond_range(&s.b),
+        Answer::Segment(s) | Answer::Arc(s) => point_beyond_range(&s.a) || point_beyond_range(&s.b),
         Answer::Ray(r) => point_beyond_range(&r.start) || beyond(&r.dir),
         Answer::Side(_, Some(p)) => point_beyond_range(p),
         Answer::Line(l) => line_beyond_range(l),

@@ -241,7 +241,7 @@ pub fn keep(c: &mut Certified<Answer>, domains: &[Option<Vec<ParamDomain>>]) {
             }
             sound
         }
-        Answer::Segment(s) => point(&mut s.a, domains) & point(&mut s.b, domains),
+        Answer::Segment(s) | Answer::Arc(s) => point(&mut s.a, domains) & point(&mut s.b, domains),
         Answer::Ray(r) => point(&mut r.start, domains),
         Answer::Side(_, p) => {
             let formed = p.as_mut().is_none_or(|q| point(q, domains));

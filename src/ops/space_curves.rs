@@ -95,10 +95,11 @@ pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
         curve_unknowns(a).periodic[0].then(|| start[0].width()),
         curve_unknowns(b).periodic[0].then(|| start[1].width()),
     ];
-    let mut points: Vec<CertifiedPoint<3>> = drop_seam_copies(clusters(left), periods)
-        .into_iter()
-        .map(|x| candidate(a, b, x))
-        .collect();
+    let mut points: Vec<CertifiedPoint<3>> =
+        drop_seam_copies(clusters(left, &|| opts.late()), periods)
+            .into_iter()
+            .map(|x| candidate(a, b, x))
+            .collect();
     points.sort_by(|p, q| p.root.params[0].total_cmp(&q.root.params[0]));
     let undecided = !points.is_empty();
     Certified {
@@ -122,13 +123,23 @@ pub fn intersect_curve_curve<A: Curve<3>, B: Curve<3>>(
     }
 }
 
-/// Merge boxes that touch into their hulls (repeated until no two touch).
-fn clusters(mut boxes: Vec<[Interval; 2]>) -> Vec<[Interval; 2]> {
+/// Merge boxes that touch into their hulls (repeated until no two touch). Quadratic or
+/// worse in the boxes: once `stop` says so (past the deadline, issue 20) and more than
+/// [`LATE_BOXES`] are left, they are merged into one hull at once (coarser, still
+/// covering every box).
+fn clusters(mut boxes: Vec<[Interval; 2]>, stop: &dyn Fn() -> bool) -> Vec<[Interval; 2]> {
     let meets = |p: &[Interval; 2], q: &[Interval; 2]| {
         (0..2).all(|i| p[i].lo() <= q[i].hi() && q[i].lo() <= p[i].hi())
     };
     let mut out: Vec<[Interval; 2]> = Vec::new();
     while let Some(mut x) = boxes.pop() {
+        if boxes.len() > LATE_BOXES && stop() {
+            for y in boxes.drain(..) {
+                x = [x[0].hull(&y[0]), x[1].hull(&y[1])];
+            }
+            out.push(x);
+            break;
+        }
         loop {
             let before = boxes.len();
             let mut rest = Vec::with_capacity(boxes.len());
@@ -148,6 +159,9 @@ fn clusters(mut boxes: Vec<[Interval; 2]>) -> Vec<[Interval; 2]> {
     }
     out
 }
+
+/// More boxes than this left to merge after the deadline are merged into one hull.
+const LATE_BOXES: usize = 256;
 
 /// A cluster that, shifted by one period of a closed curve (`periods[i]`, the
 /// parameter range's width, padded by an ulp-sized margin), meets an earlier cluster is

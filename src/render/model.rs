@@ -607,6 +607,10 @@ fn bounded_answer(m: &mut Model, a: &Answer, input: &Input, boxes: bool) {
                 foot(m, p);
             }
         }
+        Answer::Arc(s) => {
+            m.point(MarkerKind::Point, &s.a, boxes);
+            m.point(MarkerKind::Point, &s.b, boxes);
+        }
         Answer::Segment(s) => {
             m.line(Role::Answer, None, vec![pad(&s.a.xyz), pad(&s.b.xyz)]);
             m.point(MarkerKind::Point, &s.a, boxes);

@@ -24,6 +24,8 @@ mod curve_errors;
 mod curve_facts;
 #[path = "../curve_json.rs"]
 mod curve_json;
+#[path = "../curve_overlap.rs"]
+mod curve_overlap;
 #[path = "../curved_forms.rs"]
 mod curved_forms;
 #[path = "../curved_forms_3d.rs"]

@@ -35,6 +35,7 @@ mod line;
 mod line_conic3;
 mod line_surface;
 mod on_surface;
+pub(crate) mod overlap;
 pub(crate) mod pairs;
 mod params;
 pub(crate) mod quadric_feet;

@@ -53,6 +53,20 @@ pub fn intersect_curve_curve_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
     b_samples: &[(f64, f64)],
     precision: &Precision,
 ) -> Vec<CurveCurvePoint<D>> {
+    intersect_curve_curve_until(a, b, a_samples, b_samples, precision, &|| false)
+}
+
+/// [`intersect_curve_curve_f64`] that stops once `stop` says so (issue 20; asked once
+/// per sample of `a` and once per guess): the points found by then. Two nearly
+/// overlapping curves give a guess at almost every pair of samples, each a Newton run.
+pub(crate) fn intersect_curve_curve_until<A: Curve<D>, B: Curve<D>, const D: usize>(
+    a: &A,
+    b: &B,
+    a_samples: &[(f64, f64)],
+    b_samples: &[(f64, f64)],
+    precision: &Precision,
+    stop: &dyn Fn() -> bool,
+) -> Vec<CurveCurvePoint<D>> {
     let coords = [
         Coordinate::of_curve(a, precision),
         Coordinate::of_curve(b, precision),
@@ -65,6 +79,9 @@ pub fn intersect_curve_curve_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
         .map(|&(t, dt)| (t, dt, b.jet(&t, 1)))
         .collect();
     for &(t1, dt1) in a_samples {
+        if stop() {
+            break;
+        }
         let c1 = a.jet(&t1, 1);
         length = length.max(norm_f64(&c1[0]));
         for (t2, dt2, c2) in &b_jets {
@@ -96,6 +113,9 @@ pub fn intersect_curve_curve_f64<A: Curve<D>, B: Curve<D>, const D: usize>(
     let delta_len = precision.delta * length.max(1.0);
     let mut found = Vec::new();
     for x0 in guesses {
+        if stop() {
+            break;
+        }
         let direct = if D == 2 {
             let system = |x: &[f64; 2]| {
                 let (c1, c2) = (a.jet(&x[0], 1), b.jet(&x[1], 1));
@@ -227,6 +247,39 @@ impl<A: Curve<3>, B: Curve<3>> System for ClosestApproachSystem<'_, A, B> {
     }
 }
 
+/// Distinct float points with parallel tangents (merged at `δ_tan`) from which two
+/// curves are taken to overlap: two distinct plane algebraic curves of degrees `m`, `n`
+/// meet in at most `mn` points, at most `mn/2` of them tangencies, so this many is a
+/// shared arc or two curves within rounding of one another along a stretch (impl).
+pub const OVERLAP_TANGENCIES: usize = 6;
+
+/// The reason to answer `undecided` at once when the float points suggest a shared arc
+/// ([`OVERLAP_TANGENCIES`] tangential points or more): the parameter ranges they span.
+fn suspected_overlap<const D: usize>(float: &[CurveCurvePoint<D>]) -> Option<String> {
+    let tangent: Vec<&CurveCurvePoint<D>> = float.iter().filter(|p| p.tangent).collect();
+    if tangent.len() < OVERLAP_TANGENCIES {
+        return None;
+    }
+    let span = |k: usize| {
+        tangent
+            .iter()
+            .fold([f64::INFINITY, f64::NEG_INFINITY], |[lo, hi], p| {
+                [lo.min(p.params[k]), hi.max(p.params[k])]
+            })
+    };
+    let (s, t) = (span(0), span(1));
+    Some(format!(
+        "suspected overlap: the curves run together (within the float tolerance, with \
+         parallel tangents) at {} points over parameters [{:e}, {:e}] of the first and \
+         [{:e}, {:e}] of the second; a shared arc is not decided for these curves",
+        tangent.len(),
+        s[0],
+        s[1],
+        t[0],
+        t[1]
+    ))
+}
+
 /// All intersection points of two plane curves (§6.4), certified: roots of (6.5) in
 /// verified boxes, tangencies `verified_singular`, `complete` when the subdivision of
 /// the `(t₁, t₂)` domain finished.
@@ -241,10 +294,22 @@ pub fn intersect_curve2_curve2<A: Curve<2>, B: Curve<2>>(
     use crate::ops::certified::{
         certify_roots, curve_point, curve_unknowns, pieces, CertifiedPoint, Unknowns,
     };
-    let guesses: Vec<Vec<f64>> = intersect_curve_curve_f64(a, b, a_samples, b_samples, precision)
-        .iter()
-        .map(|p| p.params.to_vec())
-        .collect();
+    let stop = || opts.late();
+    let float = intersect_curve_curve_until(a, b, a_samples, b_samples, precision, &stop);
+    if let Some(reason) = suspected_overlap(&float) {
+        // Every box along a shared arc holds common points: subdivision would only
+        // spend the budget, and the float points along it are no answer (issue 20).
+        return Ok(crate::Certified {
+            value: Vec::new(),
+            status: crate::certificate::Status::Undecided,
+            complete: false,
+            arithmetic: crate::certificate::Arithmetic::Interval,
+            bits: 53,
+            reason: Some(reason),
+            perturbation: None,
+        });
+    }
+    let guesses: Vec<Vec<f64>> = float.iter().map(|p| p.params.to_vec()).collect();
     let unknowns = Unknowns::concat(&[curve_unknowns(a), curve_unknowns(b)]);
     let (pa, pb) = (pieces::curve_pieces(a), pieces::curve_pieces(b));
     let roots = if pa.is_some() || pb.is_some() {

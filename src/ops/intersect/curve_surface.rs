@@ -89,7 +89,7 @@ pub fn intersect_curve_surface_f64<S: Surface, C: Curve<3>>(
         surface_nodes,
         turn,
     };
-    intersect_curve_surface_until(surface, curve, &seeds, precision, None)
+    intersect_curve_surface_until(surface, curve, &seeds, precision, &|| false)
 }
 
 /// The most initial guesses kept (issue 20: a curve lying in a surface makes one at
@@ -104,14 +104,15 @@ pub(crate) struct Seeds<'a> {
     pub turn: f64,
 }
 
-/// [`intersect_curve_surface_f64`] that stops when `deadline` passes (checked once per
-/// curve sample and once per guess): the points found by then.
+/// [`intersect_curve_surface_f64`] that stops once `stop` says so (asked once per
+/// curve sample and once per guess; it may count work as well as watch a deadline):
+/// the points found by then.
 pub(crate) fn intersect_curve_surface_until<S: Surface, C: Curve<3>>(
     surface: &S,
     curve: &C,
     seeds: &Seeds,
     precision: &Precision,
-    deadline: Option<std::time::Instant>,
+    stop: &dyn Fn() -> bool,
 ) -> Vec<CurveSurfacePoint> {
     let ([u0, u1], [v0, v1]) = surface.domain();
     let (t0, t1) = curve.domain();
@@ -121,12 +122,12 @@ pub(crate) fn intersect_curve_surface_until<S: Surface, C: Curve<3>>(
         Coordinate::new(v0, v1, closed[1], precision),
         Coordinate::new(t0, t1, curve.is_closed(), precision),
     ];
-    let (guesses, length) = initial_guesses(surface, curve, seeds, precision, deadline);
+    let (guesses, length) = initial_guesses(surface, curve, seeds, precision, stop);
     let sin_sw = precision.sin_switch();
     let delta_len = precision.delta * length.max(1.0);
     let mut found: Vec<(CurveSurfacePoint, f64)> = Vec::new();
     for x0 in guesses {
-        if crate::certify::past(deadline) {
+        if stop() {
             break;
         }
         let system = |x: &[f64; 3]| {
@@ -179,7 +180,7 @@ fn initial_guesses<S: Surface, C: Curve<3>>(
     curve: &C,
     seeds: &Seeds,
     precision: &Precision,
-    deadline: Option<std::time::Instant>,
+    stop: &dyn Fn() -> bool,
 ) -> (Vec<[f64; 3]>, f64) {
     let sin_sw = precision.sin_switch();
     let jets: Vec<Vec<[f64; 3]>> = seeds
@@ -190,7 +191,7 @@ fn initial_guesses<S: Surface, C: Curve<3>>(
     let mut length = jets.iter().map(|s| norm_f64(&s[0])).fold(0.0f64, f64::max);
     let mut guesses = Vec::new();
     for &(t, dt) in seeds.curve_samples {
-        if guesses.len() >= MAX_GUESSES || crate::certify::past(deadline) {
+        if guesses.len() >= MAX_GUESSES || stop() {
             break;
         }
         let c = curve.jet(&t, 1);
@@ -376,7 +377,7 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
         turn,
     };
     let guesses: Vec<Vec<f64>> =
-        intersect_curve_surface_until(surface, curve, &seeds, precision, opts.deadline)
+        intersect_curve_surface_until(surface, curve, &seeds, precision, &|| opts.late())
             .iter()
             .map(|p| vec![p.surface_params[0], p.surface_params[1], p.t])
             .collect();

@@ -45,6 +45,8 @@ pub fn intersect<R: Surface, S: Surface>(
     pair: &Pair<'_, R, S>,
 ) -> Result<Certified<SurfaceIntersection>, GeomError> {
     let float = trace_all(pair);
+    // The float stage stopped on its share of `max_boxes` (issue 20), not the deadline.
+    let budget_spent = pair.spend(0) && !pair.options.certify.late();
     let mut state = State::new(pair);
     state.tracer.singular = float.singular_points;
     if pair.options.completeness {
@@ -61,6 +63,16 @@ pub fn intersect<R: Surface, S: Surface>(
         state.reasons.push("completeness was not requested".into());
         false
     };
+    if budget_spent && !complete {
+        state.reasons.insert(
+            0,
+            format!(
+                "box budget spent: the float stage stopped after {} units of work ({} per box)",
+                pair.work(),
+                super::operand::FLOAT_WORK
+            ),
+        );
+    }
     Ok(state.finish(complete))
 }
 

@@ -17,11 +17,11 @@ use crate::surface::Surface;
 const MAX_CONTACT_SEEDS: usize = 64;
 
 /// Every curve and singular point the float path finds (§9.2–§9.5). Once the
-/// certifier's deadline has passed no new branch is traced and no contact located
-/// (issue 20): what was found seeds the certified stage, whose completeness proof
-/// fails under the same deadline.
+/// certifier's deadline has passed or the float stage's share of `max_boxes` is spent
+/// ([`Pair::spend`]), no new branch is traced and no contact located (issue 20): what
+/// was found seeds the certified stage, whose completeness proof does not rely on it.
 pub fn trace_all<R: Surface, S: Surface>(pair: &Pair<'_, R, S>) -> SurfaceIntersectionF64 {
-    let late = || pair.options.certify.late();
+    let late = || pair.spend(1);
     let (mut starts, contacts) = starting_points(pair);
     let mut tracer = Tracer::new(pair);
     let mut curves: Vec<IntersectionCurve> = Vec::new();

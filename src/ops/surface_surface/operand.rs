@@ -70,7 +70,16 @@ pub struct Pair<'a, R, S> {
     pub implicit: [Option<AnyImplicit>; 2],
     pub steppers: (SurfaceStepper<'a, R>, SurfaceStepper<'a, S>),
     pub options: &'a Options,
+    /// The float stage's work so far, in units of [`FLOAT_WORK`] (issue 20): see
+    /// [`Pair::spend`].
+    work: std::cell::Cell<usize>,
 }
+
+/// Units of float-stage work one box of `max_boxes` buys (issue 20): the float stage of
+/// §9.2–§9.5 (iso-curves, their Newton guesses, march points, contact seeds and their
+/// location) may do at most `FLOAT_WORK · max_boxes` units before the certified stage,
+/// whose boxes the same option bounds.
+pub const FLOAT_WORK: usize = 64;
 
 impl<'a, R: SurfaceOperand, S: SurfaceOperand> Pair<'a, R, S> {
     /// Errors: an unbounded parameter domain (field `objects[0].domain` / `objects[1].domain`), invalid
@@ -107,11 +116,29 @@ impl<'a, R: SurfaceOperand, S: SurfaceOperand> Pair<'a, R, S> {
             implicit: [r.implicit_form(), s.implicit_form()],
             steppers: (sr, ss),
             options,
+            work: std::cell::Cell::new(0),
         })
     }
 }
 
 impl<R, S> Pair<'_, R, S> {
+    /// Count `units` of float-stage work; true once the float stage must stop: its
+    /// work budget (`FLOAT_WORK · max_boxes` units) is spent or the deadline has passed
+    /// (issue 20). Every loop of the float stage asks this once per iteration, so that
+    /// `max_boxes` bounds each phase, not only the certified one. What the float stage
+    /// misses when it stops is never claimed absent: the completeness proof of the
+    /// certified stage is independent of it and runs under the same limits.
+    pub fn spend(&self, units: usize) -> bool {
+        let w = self.work.get().saturating_add(units);
+        self.work.set(w);
+        w > FLOAT_WORK.saturating_mul(self.options.certify.max_boxes) || self.options.certify.late()
+    }
+
+    /// The float-stage work counted by [`Pair::spend`] so far.
+    pub fn work(&self) -> usize {
+        self.work.get()
+    }
+
     /// `δ_len = δ·L` (§12).
     pub fn delta_len(&self) -> f64 {
         self.options.precision.delta * self.length

@@ -8,7 +8,6 @@
 use super::frame::LocalFrame;
 use super::operand::Pair;
 use super::trace::Start;
-use crate::certify::past;
 use crate::curve::Curve;
 use crate::num::vector::{cross, dot, norm_f64, sub};
 use crate::ops::intersect::curve_surface::{
@@ -47,19 +46,21 @@ fn iso_values(nodes: &[[f64; 4]]) -> (Vec<f64>, Vec<f64>) {
 }
 
 /// Stage 1: the start points and the contact candidates (`[u, v, a, b]`). Once the
-/// certifier's deadline (`options.certify.deadline`) has passed, the iso-curves left are
-/// not intersected (issue 20): the start points found by then only seed the tracer, and
-/// the completeness proof, run under the same deadline, then fails with "time limit
-/// reached", so a point missed here is never claimed absent.
+/// certifier's deadline (`options.certify.deadline`) has passed or the float stage's
+/// share of `max_boxes` is spent ([`Pair::spend`]: one unit per iso-curve, curve sample,
+/// guess and contact node), the iso-curves left are not intersected (issue 20): the
+/// start points found by then only seed the tracer, and the completeness proof, run
+/// under the same limits and independent of this stage, fails rather than claim a
+/// point missed here absent.
 pub fn starting_points<R: Surface, S: Surface>(
     pair: &Pair<'_, R, S>,
 ) -> (Vec<Start>, Vec<[f64; 4]>) {
     let (nr, ns) = (nodes(pair.r), nodes(pair.s));
-    let deadline = pair.options.certify.deadline;
+    let stop = || pair.spend(1);
     let mut found: Vec<([f64; 4], bool)> = Vec::new();
     // 1. iso-curves of r against s: points (u, v) = iso, (a, b) on s
     for (fixed, value, cp) in
-        iso_intersections(pair.r, pair.s, &nr, &ns, &pair.options.precision, deadline)
+        iso_intersections(pair.r, pair.s, &nr, &ns, &pair.options.precision, &stop)
     {
         let t = cp.t;
         let (u, v) = if fixed == 1 { (t, value) } else { (value, t) };
@@ -68,7 +69,7 @@ pub fn starting_points<R: Surface, S: Surface>(
     }
     // 2. iso-curves of s against r
     for (fixed, value, cp) in
-        iso_intersections(pair.s, pair.r, &ns, &nr, &pair.options.precision, deadline)
+        iso_intersections(pair.s, pair.r, &ns, &nr, &pair.options.precision, &stop)
     {
         let t = cp.t;
         let (a, b) = if fixed == 1 { (t, value) } else { (value, t) };
@@ -90,7 +91,7 @@ pub fn starting_points<R: Surface, S: Surface>(
             });
         }
     }
-    if !past(deadline) {
+    if !pair.spend(0) {
         contacts.extend(contact_seeds(pair, &nr, &ns));
     }
     (starts, contacts)
@@ -106,7 +107,7 @@ fn same<R, S>(pair: &Pair<'_, R, S>, x: &[f64; 4], y: &[f64; 4]) -> bool {
 
 /// Every iso-curve of `q` (rows `v = v_j`, columns `u = u_i`) intersected with `other`:
 /// `(fixed direction of q, fixed value, point)` with `t` the free parameter of q; the
-/// iso-curves left when `deadline` passes are skipped (checked per iso-curve, and per
+/// iso-curves left once `stop` says so are skipped (asked per iso-curve, and per
 /// curve sample and guess inside [`intersect_curve_surface_until`]).
 fn iso_intersections<Q: Surface, O: Surface>(
     q: &Q,
@@ -114,7 +115,7 @@ fn iso_intersections<Q: Surface, O: Surface>(
     q_nodes: &[[f64; 4]],
     other_nodes: &[[f64; 4]],
     precision: &crate::ops::float::Precision,
-    deadline: Option<std::time::Instant>,
+    stop: &dyn Fn() -> bool,
 ) -> Vec<(usize, f64, CurveSurfacePoint)> {
     let (rows, columns) = iso_values(q_nodes);
     let mut out = Vec::new();
@@ -123,7 +124,7 @@ fn iso_intersections<Q: Surface, O: Surface>(
         .map(|&v| (1usize, v))
         .chain(columns.iter().map(|&u| (0usize, u)));
     for (fixed, value) in lines {
-        if past(deadline) {
+        if stop() {
             break;
         }
         // IsoCurve's `direction` is the running parameter.
@@ -144,7 +145,7 @@ fn iso_intersections<Q: Surface, O: Surface>(
             surface_nodes: other_nodes,
             turn: SCAN,
         };
-        for p in intersect_curve_surface_until(other, &iso, &seeds, precision, deadline) {
+        for p in intersect_curve_surface_until(other, &iso, &seeds, precision, stop) {
             out.push((fixed, value, p));
         }
     }
@@ -185,6 +186,9 @@ fn contact_seeds<R: Surface, S: Surface>(
     let limit = (2.0 * SCAN).sin();
     let mut seeds = Vec::new();
     for x in &a {
+        if pair.spend(1) {
+            break;
+        }
         for y in &b {
             let close = norm_f64(&sub(&x.p, &y.p)) <= x.radius + y.radius;
             if close && norm_f64(&cross(&x.n, &y.n)) <= limit && dot(&x.n, &y.n).abs() > 0.0 {

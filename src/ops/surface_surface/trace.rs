@@ -80,10 +80,9 @@ impl<'p, 'a, R: Surface, S: Surface> Tracer<'p, 'a, R, S> {
             };
         }
         loop {
-            // The deadline too ends a march unfinished (issue 20): checked every 64 points.
-            if points.len() >= pair.options.max_points
-                || (points.len() % 64 == 0 && pair.options.certify.late())
-            {
+            // The deadline and the float stage's work budget too end a march unfinished
+            // (issue 20): one unit per point ([`Pair::spend`]).
+            if points.len() >= pair.options.max_points || pair.spend(1) {
                 return Direction {
                     points,
                     end: CurveEnd::Unfinished,
