@@ -114,7 +114,8 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
         (0..4).any(|k| {
             let [lo, hi] = self.search[k];
             let r = &p.graph.region[k];
-            !self.pair.coords[k].periodic && !(lo <= r.lo() && r.hi() <= hi)
+            let inside = self.pair.coords[k].periodic || (lo <= r.lo() && r.hi() <= hi);
+            !inside
         })
     }
 
