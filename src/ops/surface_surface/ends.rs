@@ -9,7 +9,7 @@
 //! exact rationals instead.
 //!
 //! The cylinder is `O + ρ(cos u X + sin u Y) + v Z` with `Z = axis/|axis|` (the frame is
-//! exactly orthonormal, `spec`: `curve::frame`), taken only when `|axis|` is rational (so
+//! exactly orthonormal, `curve::frame`), taken only when `|axis|` is rational (so
 //! `Z` is). With `w = c − O` (`c` the sphere's centre, `R` its radius), `w_z = w·Z` and
 //! `d² = |w|² − w_z²` (the squared distance of `c` from the axis), the squared distance
 //! minus `R²` at the point `(u, v)` of the cylinder is

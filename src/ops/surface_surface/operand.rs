@@ -25,7 +25,7 @@ pub trait SurfaceOperand: Surface {
         None
     }
 
-    /// The surface as an [`AnySurface`], for the exact decisions of [`super::ends`]
+    /// The surface as an [`AnySurface`], for the exact decisions of `surface_surface::ends`
     /// (default: none).
     fn as_any(&self) -> Option<&AnySurface> {
         None
