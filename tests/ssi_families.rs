@@ -618,55 +618,108 @@ fn touching_patches_perturbed_are_never_wrong() {
 // 4. The curve at a cylinder's height end
 // ---------------------------------------------------------------------------------------
 
-/// The cylinder of radius `ρ` along z, heights `[−2R, z₁]`, ∩ the sphere of radius `R`
-/// centred at `c` on the x or y axis: on the generator at angle `θ` from the centre's
-/// direction, `z² = R² − ρ² − c² + 2cρ cos θ`, between `R² − (ρ + c)² > 0` and
-/// `top² = R² − (ρ − c)²` (Pythagorean `(ρ − c, top, R)`, exact): two loops, the upper
-/// one highest at `z = top`. With `z₁ = top` it touches the height end at one point (two
-/// loops); one ulp lower it is cut there (one loop and one open curve); one ulp higher
-/// it stays inside (two loops). Not yet decided (issue 15, open): the chain cannot
-/// prove the boxes where the upper loop meets or nears the face (the slab must stay in
-/// the search box); the promise is asserted and the rate printed.
+/// How many shapes the height-end family runs (three ends each): `GEOCERT_SSI_END_CASES`,
+/// default 8.
+fn end_cases() -> usize {
+    std::env::var("GEOCERT_SSI_END_CASES")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(8)
+}
+
+/// The cylinder of radius `ρ` along z through `o = (o_x, o_y, 0)` ∩ the sphere of radius
+/// `R` centred at `o + (c·e, z_c)` (`e` a horizontal unit axis): on the generator at angle
+/// `θ` from `e`, `(z − z_c)² = R² − ρ² − c² + 2cρ cos θ`, between `R² − (ρ + c)² > 0` and
+/// `t² = R² − (ρ − c)²` with `(ρ − c, t, R)` a scaled Pythagorean triple (exact): two
+/// loops, the upper one highest at `z_c + t`, the lower one lowest at `z_c − t` (`θ = 0`).
+/// Seeded: the triple, the scale (a power of two), `c`, `o`, `z_c`, `e` all dyadic.
+///
+/// The upper end at `z₁ = z_c + t` (or the lower at `z_c − t`) touches a loop at its
+/// extreme point from inside: two loops (one touching the end). One ulp towards the
+/// loop it is cut there: one loop and one open curve whose ends are about `√ulp` apart.
+/// One ulp away it stays inside: two loops. Proven are the touch and the ulp away
+/// (the end face decided exactly, `ops::surface_surface::ends`, the loop's chain
+/// reaching past it; at least 90 % asserted, all 16 of the default 24 cases in the
+/// first run); the cut is left undecided (its ends cross the face at an angle of
+/// about `√ulp`, which a box over the height does not resolve in doubles — issue 15,
+/// open). The promise (a proven answer has the truth's components, an unproven one says
+/// why) is asserted for all.
 #[test]
 fn cylinder_and_sphere_touching_the_height_end_are_never_wrong() {
+    let mut rng = Rng::new(1507);
     let mut checked = 0;
-    let (mut ok, mut n) = (0, 0);
-    // (ρ, c, top, R)
-    let shapes = [
-        (1.0, 0.125, 3.0, 3.125),
-        (3.5, 0.5, 4.0, 5.0),
-        (6.0, 1.0, 12.0, 13.0),
-        (9.0, 1.0, 15.0, 17.0),
-    ];
-    for (i, (rho, c, top, big)) in shapes.into_iter().enumerate() {
-        for s in [1.0, 0.25] {
-            let (rho, c, top, big) = (rho * s, c * s, top * s, big * s);
-            let centre = if i % 2 == 0 {
-                [c, 0.0, 0.0]
+    let (mut ok, mut n) = ([0; 3], 0);
+    for i in 0..end_cases() {
+        let (m, k) = (2 + (u01(&mut rng) * 3.0) as i32 % 3, 1 + i as i32 % 2);
+        let (m, k) = (m.max(k + 1) as f64, k as f64);
+        let (a, b, hyp) = (m * m - k * k, 2.0 * m * k, m * m + k * k);
+        let (p, t) = if rng.unit() > 0.0 { (a, b) } else { (b, a) };
+        let scale = [0.25, 0.5, 1.0, 2.0][i % 4];
+        let (p, t, big) = (p * scale, t * scale, hyp * scale);
+        // 0 < c < (R − p)/2, so that R > ρ + c: the lower loop exists too
+        let c = (big - p) / 2.0 * ((1.0 + (u01(&mut rng) * 6.0).floor()) / 8.0);
+        let rho = p + c;
+        let o = [
+            dyadic(&mut rng, -1.0, 1.0),
+            dyadic(&mut rng, -1.0, 1.0),
+            0.0,
+        ];
+        let zc = dyadic(&mut rng, -1.0, 1.0);
+        let e = [[1.0, 0.0], [0.0, 1.0], [-1.0, 0.0], [0.0, -1.0]][(i / 2) % 4];
+        let centre = [o[0] + c * e[0], o[1] + c * e[1], zc];
+        let upper = i % 2 == 0;
+        let end = if upper { zc + t } else { zc - t };
+        let (toward, away) = if upper {
+            (
+                geocert::num::round::next_down(end),
+                geocert::num::round::next_up(end),
+            )
+        } else {
+            (
+                geocert::num::round::next_up(end),
+                geocert::num::round::next_down(end),
+            )
+        };
+        for (v, (z, truth)) in [(end, (2, 0)), (toward, (1, 1)), (away, (2, 0))]
+            .into_iter()
+            .enumerate()
+        {
+            let h = if upper {
+                [zc - 2.0 * big, z]
             } else {
-                [0.0, c, 0.0]
+                [z, zc + 2.0 * big]
             };
-            for (z1, truth) in [
-                (top, (2, 0)),
-                (geocert::num::round::next_down(top), (1, 1)),
-                (geocert::num::round::next_up(top), (2, 0)),
-            ] {
-                let h = [-2.0 * big, z1];
-                let cyl = Cylinder::new([0.0; 3], [rho, rho], [0.0, 0.0, 1.0], None, h).unwrap();
-                let sphere = Sphere::new(centre, big, None, None).unwrap();
-                let res = run(&cyl, &sphere);
-                let what = format!("ρ {rho} centre {centre:?} R {big} top {z1}");
-                eprintln!("{what}: {}", summary(&res));
-                n += 1;
-                ok += usize::from(proven(&res, truth.0, truth.1, &what));
-                checked += check_vertices(
-                    &res,
-                    |p, b| near_cylinder(p, [0.0; 3], 2, rho, b) && near_sphere(p, centre, big, b),
-                    &what,
-                );
-            }
+            let cyl = Cylinder::new(o, [rho, rho], [0.0, 0.0, 1.0], None, h).unwrap();
+            let sphere = Sphere::new(centre, big, None, None).unwrap();
+            let res = if i % 3 == 0 {
+                run(&sphere, &cyl)
+            } else {
+                run(&cyl, &sphere)
+            };
+            let what = format!("case {i}: ρ {rho} o {o:?} centre {centre:?} R {big} heights {h:?}");
+            eprintln!("{what}: {}", summary(&res));
+            n += 1;
+            ok[v] += usize::from(proven(&res, truth.0, truth.1, &what));
+            checked += check_vertices(
+                &res,
+                |p, b| near_cylinder(p, o, 2, rho, b) && near_sphere(p, centre, big, b),
+                &what,
+            );
         }
     }
-    assert!(checked > 0);
-    eprintln!("height end: {ok} of {n} proven");
+    assert!(checked > 100);
+    eprintln!(
+        "height end: {} of {n} proven (touching {}, ulp away {}, cut {})",
+        ok.iter().sum::<usize>(),
+        ok[0],
+        ok[2],
+        ok[1]
+    );
+    // 16 of 24 in the first run: every touching and every ulp-away case, no cut one
+    assert_rate(
+        ok[0] + ok[2],
+        2 * n / 3,
+        90,
+        "height end, touching or an ulp away",
+    );
 }

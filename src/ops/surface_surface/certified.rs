@@ -60,6 +60,7 @@ pub fn intersect<R: Surface, S: Surface>(
     let complete = if pair.options.completeness {
         state.prove_complete()?
     } else {
+        state.check_reaching(None);
         state.reasons.push("completeness was not requested".into());
         false
     };
@@ -85,6 +86,7 @@ pub fn trace<R: Surface, S: Surface>(
     let curve = trace_branch(&mut state.tracer, x, &mut Vec::new());
     state.certify_new_singular();
     state.add_curve(curve);
+    state.check_reaching(None);
     state
         .reasons
         .push("one branch only: nothing is said about other components".into());
@@ -223,13 +225,55 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
     }
 
     /// Split a float curve at its singular points and certify each arc.
-    fn add_curve(&mut self, curve: IntersectionCurve) {
+    fn add_curve(&mut self, mut curve: IntersectionCurve) {
         self.certify_new_singular();
         if super::float::collapsed(self.ctx.pair, &curve) {
             return;
         }
+        self.close_at_touch(&mut curve);
         for (points, start, end) in split(&curve) {
             self.add_arc(points, start, end);
+        }
+    }
+
+    /// A float curve whose two ends lie on the same face decided exactly to hold no
+    /// point of the intersection, or one the curve touches from inside
+    /// ([`super::ends::FaceTruth`]), stepped out of the domain by rounding where the loop
+    /// touches or nears the face (no arc ends on such a face twice): it is taken as the
+    /// loop it is — its two end points (clipped to the face, off the curve) dropped and
+    /// the rest closed — and proven as any closed chain (the proof does not rely on this
+    /// guess).
+    fn close_at_touch(&self, curve: &mut IntersectionCurve) {
+        let pair = self.ctx.pair;
+        let face = |p: &CurvePoint| {
+            (0..4).find_map(|k| {
+                let c = &pair.coords[k];
+                let bound = if p.params[k] == c.lo {
+                    c.lo
+                } else if p.params[k] == c.hi {
+                    c.hi
+                } else {
+                    return None;
+                };
+                (!c.periodic).then_some((k, bound))
+            })
+        };
+        let (Some(first), Some(last)) = (curve.points.first(), curve.points.last()) else {
+            return;
+        };
+        let ends = curve.ends == [CurveEnd::Boundary; 2];
+        let touched = match (face(first), face(last)) {
+            (Some(a), Some(b)) if a == b => pair.decided.iter().any(|d| (d.k, d.bound) == a),
+            _ => false,
+        };
+        let singular = curve.points.iter().any(|p| p.singular.is_some());
+        if ends && touched && !singular && curve.points.len() >= 5 {
+            curve.points.pop();
+            curve.points.remove(0);
+            let first = curve.points[0];
+            curve.points.push(first);
+            curve.closed = true;
+            curve.ends = [CurveEnd::Closed; 2];
         }
     }
 
@@ -426,6 +470,7 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
                 faces = self.faces()?;
             }
         }
+        self.check_reaching(Some(&faces));
         let unmatched: Vec<RootBox> = self
             .all_roots(&faces)
             .filter(|r| !self.matched(r))
@@ -485,6 +530,74 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
         Ok(out)
     }
 
+    /// A closed chain reaching past a domain face (module doc of `chain`) proves a loop
+    /// of the continued surfaces. It is a loop of the domain when it has a vertex strictly
+    /// inside the domain and crosses no face: a crossing is a point of a face on the
+    /// loop, so in a piece reaching past that face, and every such point lies in a root
+    /// box or an undecided box of the face solves (faces decided exactly have none: no
+    /// point, or one touched from inside), or in a singular region (whose parts of the
+    /// faces are not solved). Otherwise the chain is demoted to undecided.
+    ///
+    /// Without the face solves (`None`: one branch traced, or no completeness asked for)
+    /// a reaching chain is demoted.
+    fn check_reaching(&mut self, faces: Option<&Solved>) {
+        let known = faces.is_some();
+        let faces = faces.cloned().unwrap_or_default();
+        let on_faces: Vec<[Interval; 4]> = faces
+            .roots
+            .iter()
+            .filter(|r| r.kind == RootKind::DomainFace)
+            .map(|r| r.params)
+            .chain(
+                faces
+                    .undecided
+                    .iter()
+                    .filter(|(_, k)| *k == RootKind::DomainFace)
+                    .map(|(b, _)| *b),
+            )
+            // the face solves leave out the singular regions' parts of the faces
+            .chain(self.boxes.iter().map(|b| b.region))
+            .collect();
+        let search = self.ctx.search;
+        let pair = self.ctx.pair;
+        let strictly_inside = |b: &[Interval; 4]| {
+            (0..4).all(|k| {
+                pair.coords[k].periodic || (search[k][0] < b[k].lo() && b[k].hi() < search[k][1])
+            })
+        };
+        for (c, pieces) in self.arcs.iter_mut() {
+            if c.status != Status::Verified || !c.curve.closed {
+                continue;
+            }
+            let reach: Vec<&Piece> = pieces.iter().filter(|p| self.ctx.reaching(p)).collect();
+            if reach.is_empty() {
+                continue;
+            }
+            let crossed = !known
+                || reach.iter().any(|p| {
+                    let region: [Interval; 4] = std::array::from_fn(|k| p.graph.region[k]);
+                    on_faces.iter().any(|b| {
+                        let b = self.ctx.shift_near(b, &region);
+                        (0..4).all(|k| !b[k].intersection(&region[k]).is_empty())
+                    })
+                });
+            let inside = c.bounds.iter().any(|v| strictly_inside(&v.param_box));
+            if crossed || !inside {
+                c.status = Status::Undecided;
+                c.bounds.clear();
+                c.chain.clear();
+                c.reason = Some(if crossed {
+                    "the loop's chain reaches past a domain face where the face system has a \
+                     root or an undecided box: whether it leaves the domain is not proven"
+                        .into()
+                } else {
+                    "no vertex of the loop is proven strictly inside the domain".into()
+                });
+                pieces.clear();
+            }
+        }
+    }
+
     fn all_roots<'s>(&'s self, faces: &'s Solved) -> impl Iterator<Item = RootBox> + 's {
         faces
             .roots
@@ -495,12 +608,22 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
 
     /// A completeness root lies on a certified chain (or, off a singular box's face, in a
     /// singular box).
+    ///
+    /// A root on a domain face is matched only by a piece inside the search box: one
+    /// reaching past the face holds a crossing its chain does not account for.
     fn matched(&self, r: &RootBox) -> bool {
+        let face = r.kind == RootKind::DomainFace;
         let in_chain = self
             .arcs
             .iter()
             .filter(|(c, _)| c.status == Status::Verified)
-            .any(|(_, pieces)| self.in_pieces(&r.params, pieces, false));
+            .any(|(_, pieces)| {
+                pieces.iter().any(|p| {
+                    let region: [Interval; 4] = std::array::from_fn(|k| p.graph.region[k]);
+                    !(face && self.ctx.reaching(p))
+                        && self.ctx.shifted_inside(&r.params, &region, false)
+                })
+            });
         let in_hole = r.kind != RootKind::SingularFace && self.in_region(&r.params);
         in_chain || in_hole
     }

@@ -15,6 +15,12 @@
 //! Then the connected component of the intersection containing the chain lies in the
 //! union of its boxes and of those singular boxes.
 //!
+//! A closed chain may reach past a domain face in a parameter whose surface continues
+//! beyond it by the same formula ([`super::SurfaceOperand::extends`], a cylinder's
+//! height): its boxes then prove the loop of the continued surfaces, and the caller
+//! must show that the loop does not leave the domain ([`ChainContext::reaching`]; a
+//! loop touching a face, as at a cylinder's height end, is proven this way).
+//!
 //! Boxes may reach beyond the domain of a periodic parameter (the surfaces' formulas are
 //! periodic in their angles); joins compare boxes shifted by whole periods, with the
 //! period enclosed.
@@ -67,6 +73,9 @@ pub struct ChainContext<'p, 'a, R, S> {
     pub search: [[f64; 2]; 4],
     /// The singular boxes, in the tracer's numbering.
     pub singular: Vec<[Interval; 4]>,
+    /// Boxes may reach past the domain faces of extendable parameters (set while a
+    /// closed chain is proven, module doc).
+    extended: std::cell::Cell<bool>,
 }
 
 /// How far a box's slab reaches beyond the segment's ends, relative to the segment.
@@ -96,7 +105,18 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
             },
             search,
             singular,
+            extended: std::cell::Cell::new(false),
         }
+    }
+
+    /// The piece's box is not inside the search box (it reaches past a domain face).
+    pub fn reaching(&self, p: &Piece) -> bool {
+        (0..4).any(|k| {
+            let [lo, hi] = self.search[k];
+            let r = &p.graph.region[k];
+            let inside = self.pair.coords[k].periodic || (lo <= r.lo() && r.hi() <= hi);
+            !inside
+        })
     }
 
     /// An enclosure of the period of coordinate `k` (its bounds may be roundings of the
@@ -151,14 +171,20 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
         })
     }
 
-    /// The limit boxes may not leave: the search box in bounded coordinates.
+    /// The limit boxes may not leave: the search box in bounded coordinates (widened by
+    /// a quarter of the range on each side in extendable ones while a closed chain is
+    /// proven, module doc).
     fn limit(&self) -> Vec<Interval> {
         (0..4)
             .map(|k| {
+                let [lo, hi] = self.search[k];
                 if self.pair.coords[k].periodic {
                     Interval::from_bounds(-f64::MAX, f64::MAX)
+                } else if self.extended.get() && self.pair.extends[k] {
+                    let m = 0.25 * (hi - lo);
+                    Interval::from_bounds(lo - m, hi + m)
                 } else {
-                    Interval::from_bounds(self.search[k][0], self.search[k][1])
+                    Interval::from_bounds(lo, hi)
                 }
             })
             .collect()
@@ -383,6 +409,18 @@ impl<'p, 'a, R: Surface, S: Surface> ChainContext<'p, 'a, R, S> {
     /// for the exit face of one to fit in the next), the proof is repeated through
     /// curve points halfway between the given ones, up to [`MAX_DENSIFY`] times.
     pub fn arc(
+        &self,
+        xs: &[[f64; 4]],
+        start: Option<Anchor>,
+        end: Option<Anchor>,
+    ) -> Result<Vec<Piece>, String> {
+        self.extended.set(start.is_none() && end.is_none());
+        let result = self.arc_densified(xs, start, end);
+        self.extended.set(false);
+        result
+    }
+
+    fn arc_densified(
         &self,
         xs: &[[f64; 4]],
         start: Option<Anchor>,

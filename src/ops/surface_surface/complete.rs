@@ -15,6 +15,11 @@
 //! or one on a domain face) in `V`: then its component is that chain's, or it is not a
 //! point of `D'`. A root that matches nothing is a point of a component not yet traced:
 //! the caller traces from it and tries again.
+//!
+//! A face decided exactly ([`super::ends`]) is not solved: it holds no point of the
+//! intersection, or one where the curve touches it from inside the domain — such a
+//! point is not an end of any arc, and its component is a loop found by the critical
+//! system or an arc with ends on other faces.
 
 use super::chain::ChainContext;
 use super::equations::CriticalSystem;
@@ -136,6 +141,11 @@ pub fn domain_face_roots<R: Surface, S: Surface>(
             continue;
         }
         for bound in ctx.search[k] {
+            // decided exactly (`super::ends`): no point, or one where the curve only
+            // touches the face from inside, which every loop through it covers
+            if pair.decided.iter().any(|d| d.k == k && d.bound == bound) {
+                continue;
+            }
             let face: [[f64; 2]; 4] = std::array::from_fn(|i| {
                 if i == k {
                     [bound, bound]

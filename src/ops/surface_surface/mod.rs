@@ -28,6 +28,7 @@ mod chain;
 mod complete;
 mod contact;
 mod corrector;
+mod ends;
 mod equations;
 mod float;
 mod frame;

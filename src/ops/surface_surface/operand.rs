@@ -24,11 +24,37 @@ pub trait SurfaceOperand: Surface {
     fn implicit_form(&self) -> Option<AnyImplicit> {
         None
     }
+
+    /// The surface as an [`AnySurface`], for the exact decisions of `surface_surface::ends`
+    /// (default: none).
+    fn as_any(&self) -> Option<&AnySurface> {
+        None
+    }
+
+    /// Which parameters `(u, v)` may be evaluated beyond the domain by the same formula,
+    /// giving the same surface continued (a cylinder's height): certified chains of
+    /// closed curves may then reach past those faces (module doc of `chain`). Default:
+    /// neither.
+    fn extends(&self) -> [bool; 2] {
+        [false, false]
+    }
 }
 
 impl SurfaceOperand for AnySurface {
     fn implicit_form(&self) -> Option<AnyImplicit> {
         self.implicit()
+    }
+
+    fn as_any(&self) -> Option<&AnySurface> {
+        Some(self)
+    }
+
+    /// A cylinder is `origin + ρ(cos u X + sin u Y) + v Z` for every real `u`, `v`.
+    fn extends(&self) -> [bool; 2] {
+        match self {
+            AnySurface::Cylinder(_) => [true, true],
+            _ => [false, false],
+        }
     }
 }
 
@@ -73,6 +99,11 @@ pub struct Pair<'a, R, S> {
     /// The float stage's work so far, in units of [`FLOAT_WORK`] (issue 20): see
     /// [`Pair::spend`].
     work: std::cell::Cell<usize>,
+    /// `[u, v, a, b]`: the surface's formula continues the same surface beyond the
+    /// domain ([`SurfaceOperand::extends`]).
+    pub extends: [bool; 4],
+    /// Domain faces whose face system was decided exactly ([`super::ends`]).
+    pub decided: Vec<super::ends::DecidedFace>,
 }
 
 /// Units of float-stage work one box of `max_boxes` buys (issue 20): the float stage of
@@ -107,6 +138,7 @@ impl<'a, R: SurfaceOperand, S: SurfaceOperand> Pair<'a, R, S> {
             }
         });
         let length = bounding_diagonal(r, ru, rv).max(bounding_diagonal(s, sa, sb));
+        let ([e0, e1], [e2, e3]) = (r.extends(), s.extends());
         Ok(Pair {
             r,
             s,
@@ -117,6 +149,8 @@ impl<'a, R: SurfaceOperand, S: SurfaceOperand> Pair<'a, R, S> {
             steppers: (sr, ss),
             options,
             work: std::cell::Cell::new(0),
+            extends: [e0, e1, e2, e3],
+            decided: super::ends::decide(r.as_any(), s.as_any()),
         })
     }
 }
