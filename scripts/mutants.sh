@@ -18,7 +18,7 @@ export CARGO_PROFILE_RELEASE_INCREMENTAL=true
 
 # id @ file @ text @ replacement @ test files (tests/<name>.rs; each runs inside its suite)
 MUTANTS=(
-  "M1@src/num/mpfr_interval/mod.rs@let lo = self.lo.to_f64_round(Round::Down);@let lo = self.lo.to_f64_round(Round::Up);@cli_curved curved_forms intersect_three_surfaces"
+  "M1@src/num/mpfr_interval/mod.rs@let lo = self.lo.to_f64_round(Round::Down);@let lo = self.lo.to_f64_round(Round::Up);@cli_curved curved_forms intersect_three_surfaces verify_rational"
   "M2@src/ops/certified/seam.rs@if !unknowns.periodic.iter().any(|&p| p) {@if true {@cli_curved"
   "M3@src/certify/ledger.rs@        let status = roots@        roots.truncate(roots.len() - usize::from(roots.len() > 2));\n        let status = roots@intersect_curves project_surface curved_forms"
   "M4@src/certify/ledger.rs@let complete = self.undecided.is_empty();@let complete = true;@certify_systems certify_properties"

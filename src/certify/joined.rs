@@ -31,6 +31,9 @@ use super::krawczyk::{krawczyk_with, smooth_jacobian, value_at, Krawczyk};
 use super::level::CertInterval;
 use super::system::System;
 
+/// The parts of a box: each with the system valid on it.
+pub type Parts<S, I> = Vec<(S, IBox<I>)>;
+
 /// One Krawczyk step over `x` for a map that equals `parts[i].0` on the closed box
 /// `parts[i].1` (module doc), about the midpoint of `x`. The parts must cover `x` and
 /// the map must be continuous on `x`; `Inconclusive` when a part is not proven `C¹`,
@@ -67,10 +70,10 @@ pub fn krawczyk_parts<S: System, I: CertInterval>(parts: &[(S, IBox<I>)], x: &[I
 /// box `X` (each a closed box with the map valid on it, together covering `X`).
 /// Epsilon-inflation from `start` (Rump 1983), a few steps: `X ← hull(X, K(X))` grown
 /// by half its width on each side (and a few ulps); once `K(X) ⊆ int X`, the enclosure is narrowed by
-/// `E ← E ∩ K(E)` while that halves it. Returns `(X, E)`: exactly one zero in `X`, and
+/// `E ← E ∩ K(E)` while that shrinks it by a tenth or more. Returns `(X, E)`: exactly one zero in `X`, and
 /// it lies in `E ⊆ X`.
 pub fn verify_in_parts<S: System, I: CertInterval>(
-    parts_of: &dyn Fn(&[I]) -> Vec<(S, IBox<I>)>,
+    parts_of: &dyn Fn(&[I]) -> Parts<S, I>,
     start: &[I],
     steps: usize,
 ) -> Option<(IBox<I>, IBox<I>)> {
@@ -80,7 +83,7 @@ pub fn verify_in_parts<S: System, I: CertInterval>(
             Krawczyk::Unique(k) => {
                 let region = x.clone();
                 let mut e = boxes::intersection(&x, &k)?;
-                for _ in 0..8 {
+                for _ in 0..64 {
                     let before = boxes::widths(&e).into_iter().fold(0.0, f64::max);
                     let k = match krawczyk_parts(&parts_of(&e), &e) {
                         Krawczyk::Unique(k) | Krawczyk::Image(k) => k,
@@ -91,7 +94,8 @@ pub fn verify_in_parts<S: System, I: CertInterval>(
                     };
                     e = next;
                     let after = boxes::widths(&e).into_iter().fold(0.0, f64::max);
-                    if after.is_nan() || after >= 0.5 * before {
+                    // linear contraction (the hull's slopes differ across the cut)
+                    if after.is_nan() || after >= 0.9 * before {
                         break;
                     }
                 }
@@ -112,7 +116,7 @@ pub fn verify_in_parts<S: System, I: CertInterval>(
 mod tests {
     use super::*;
     use crate::certify::boxes::test_box as b;
-    use crate::num::{Interval, Real};
+    use crate::num::{Interval, IntervalLike, Real};
 
     /// One linear piece `F(x, y) = (a·x + y − c, x − 2y)` of a map whose first
     /// equation changes slope at `x = 0` (`a` is 1 on the left, 3 on the right): with

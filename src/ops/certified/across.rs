@@ -15,7 +15,6 @@
 //! its parts' Jacobians are the true ones times `ρ` in that column). Its zeros are the
 //! original zeros mapped by `s ↦ x`; the enclosure is mapped back outward.
 
-use super::pieces::meets_shifted;
 use super::{shifted_inside, CertifiedRoot, Unknowns};
 use crate::certificate::Status;
 use crate::certify::{joined, System};
@@ -289,4 +288,35 @@ fn covered<S>(tiles: &[(S, Unknowns)], whole: &Unknowns, x: &[Interval]) -> bool
         };
         (whole.periodic[i] && !cut) || (lo <= xi.lo() && xi.hi() <= hi)
     })
+}
+
+/// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
+/// −P, P an enclosure of the period), meets `b` (a root on a seam found in two pieces
+/// at both ends of the period).
+pub(super) fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
+    shifted_to_meet(a, b, whole).is_some()
+}
+
+/// `a` shifted as in [`meets_shifted`] so that it meets `b` (an enclosure of the
+/// shifted box), or `None`: the hull of the two is then the tight box across a seam,
+/// not the whole period.
+pub(super) fn shifted_to_meet(
+    a: &[Interval],
+    b: &[Interval],
+    whole: &Unknowns,
+) -> Option<Vec<Interval>> {
+    (0..a.len())
+        .map(|i| {
+            let shifts = if whole.periodic[i] {
+                let p = whole.period(i);
+                vec![Interval::point(0.0), p, -p]
+            } else {
+                vec![Interval::point(0.0)]
+            };
+            shifts
+                .into_iter()
+                .map(|s| a[i] + s)
+                .find(|s| !s.intersection(&b[i]).is_empty())
+        })
+        .collect()
 }

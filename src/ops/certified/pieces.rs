@@ -21,12 +21,12 @@
 //! when every piece is. A root on a knot is found from both sides; the copies are
 //! merged into one (the same thin box, or one box inside the other).
 
+use super::across::shifted_to_meet;
 use super::{push_unique, shifted_inside, CertifiedRoot, Options, Unknowns};
 use crate::certificate::{Certified, Status};
 use crate::certify::{Root, System};
 use crate::curve::Curve;
 use crate::error::GeomError;
-use crate::num::Interval;
 use crate::surface::Surface;
 
 /// The pinned pieces of a curve with interior breaks, each with its closed parameter
@@ -177,33 +177,6 @@ fn merge(roots: &mut Vec<CertifiedRoot>, earlier: usize, root: CertifiedRoot, wh
         }
         _ => push_unique(roots, root, whole),
     }
-}
-
-/// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
-/// −P, P an enclosure of the period), meets `b` (a root on a seam found in two pieces
-/// at both ends of the period).
-pub(super) fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
-    shifted_to_meet(a, b, whole).is_some()
-}
-
-/// `a` shifted as in [`meets_shifted`] so that it meets `b` (an enclosure of the
-/// shifted box), or `None`: the hull of the two is then the tight box across a seam,
-/// not the whole period.
-fn shifted_to_meet(a: &[Interval], b: &[Interval], whole: &Unknowns) -> Option<Vec<Interval>> {
-    (0..a.len())
-        .map(|i| {
-            let shifts = if whole.periodic[i] {
-                let p = whole.period(i);
-                vec![Interval::point(0.0), p, -p]
-            } else {
-                vec![Interval::point(0.0)]
-            };
-            shifts
-                .into_iter()
-                .map(|s| a[i] + s)
-                .find(|s| !s.intersection(&b[i]).is_empty())
-        })
-        .collect()
 }
 
 /// The answer of the pieces together, with the status and completeness rules of
