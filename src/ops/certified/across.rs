@@ -293,18 +293,14 @@ fn covered<S>(tiles: &[(S, Unknowns)], whole: &Unknowns, x: &[Interval]) -> bool
 /// `a`, shifted by a whole number of periods in its periodic coordinates (by 0, +P or
 /// −P, P an enclosure of the period), meets `b` (a root on a seam found in two pieces
 /// at both ends of the period).
-pub(super) fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
+pub fn meets_shifted(a: &[Interval], b: &[Interval], whole: &Unknowns) -> bool {
     shifted_to_meet(a, b, whole).is_some()
 }
 
 /// `a` shifted as in [`meets_shifted`] so that it meets `b` (an enclosure of the
 /// shifted box), or `None`: the hull of the two is then the tight box across a seam,
 /// not the whole period.
-pub(super) fn shifted_to_meet(
-    a: &[Interval],
-    b: &[Interval],
-    whole: &Unknowns,
-) -> Option<Vec<Interval>> {
+pub fn shifted_to_meet(a: &[Interval], b: &[Interval], whole: &Unknowns) -> Option<Vec<Interval>> {
     (0..a.len())
         .map(|i| {
             let shifts = if whole.periodic[i] {

@@ -21,7 +21,7 @@ use crate::num::Interval;
 
 pub use crate::certify::Options;
 
-mod across;
+pub mod across;
 pub mod boundary;
 pub mod pieces;
 mod seam;

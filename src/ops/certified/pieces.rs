@@ -260,7 +260,7 @@ pub fn surface_parts<'a, S: Surface>(
     }
 }
 
-/// The tiles of a curve–surface system for [`across`]: every knot rectangle of the
+/// The tiles of a curve–surface system for [`super::across`]: every knot rectangle of the
 /// surface (or the whole surface) with every piece of the curve (or the whole curve),
 /// the surface's two unknowns first. `system` builds the system of a surface and a
 /// curve.
