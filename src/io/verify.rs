@@ -24,7 +24,7 @@ use super::result::{CaseResult, ClaimOut};
 use super::solve::answer;
 use crate::error::GeomError;
 use crate::num::parse::parse_rational;
-use crate::ops::verify::{verify, Claim, ClaimedPoint};
+use crate::ops::verify::{verify, Claim, ClaimedArc, ClaimedPoint};
 use crate::ops::Shape;
 
 #[derive(Debug, Deserialize)]
@@ -34,6 +34,8 @@ struct ClaimIn {
     #[serde(default)]
     points: Vec<ClaimPoint>,
     tolerance: Option<Double>,
+    /// A claimed shared arc: its ends `a` and `b`, points of the result format.
+    arc: Option<ArcIn>,
     /// Claimed curves, lines, segments and rays: not yet checked (reported `undecided`).
     line: Option<serde_json::Value>,
     segment: Option<serde_json::Value>,
@@ -85,10 +87,17 @@ struct ClaimPoint {
 
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
+struct ArcIn {
+    a: ClaimPoint,
+    b: ClaimPoint,
+}
+
+#[derive(Debug, Deserialize)]
+#[serde(deny_unknown_fields)]
 struct ClaimExact {
     xyz: Option<Vec<Num>>,
-    #[serde(default, rename = "params")]
-    _params: serde::de::IgnoredAny,
+    /// Read for the ends of a claimed arc (their exact parameters on both curves).
+    params: Option<Vec<Vec<Num>>>,
     #[serde(default, rename = "distance_squared")]
     _distance_squared: serde::de::IgnoredAny,
 }
@@ -124,14 +133,7 @@ pub fn verify_case(read: ReadCase) -> CaseResult {
         crate::ops::beyond_range::keep_exact_beyond_range(&mut truth.value);
     }
     let mut record = answer_out::result(case.id.clone(), &truth);
-    let points = truth.value.points();
-    record.missed = Some(
-        checked
-            .missed
-            .iter()
-            .map(|&j| answer_out::point(&points[j]))
-            .collect(),
-    );
+    record.missed = Some(checked.missed.iter().map(answer_out::point).collect());
     record.claims = Some(
         checked
             .items
@@ -213,6 +215,35 @@ fn claimed_point(p: &ClaimPoint, f: &str) -> Result<ClaimedPoint, GeomError> {
     })
 }
 
+/// The exact parameters of a claimed arc's end on every object: `exact.params`, else
+/// `params`.
+fn end_params(p: &ClaimPoint, f: &str) -> Result<Option<Vec<Vec<Rational>>>, GeomError> {
+    let (given, field) = match p.exact.as_ref().and_then(|e| e.params.as_ref()) {
+        Some(e) => (e, format!("{f}.exact.params")),
+        None => match &p.params {
+            Some(ps) => (ps, format!("{f}.params")),
+            None => return Ok(None),
+        },
+    };
+    let v = given
+        .iter()
+        .enumerate()
+        .map(|(j, ps)| numbers(ps, &format!("{field}[{j}]")))
+        .collect::<Result<_, _>>()?;
+    Ok(Some(v))
+}
+
+fn claimed_arc(arc: &ArcIn) -> Result<ClaimedArc, GeomError> {
+    let (a, b) = (&arc.a, &arc.b);
+    Ok(ClaimedArc {
+        ends: [
+            claimed_point(a, "claim.arc.a")?,
+            claimed_point(b, "claim.arc.b")?,
+        ],
+        params: [end_params(a, "claim.arc.a")?, end_params(b, "claim.arc.b")?],
+    })
+}
+
 fn read_claim(value: serde_json::Value, fallback: Option<Double>) -> Result<Claim, GeomError> {
     let claim: ClaimIn = deserialize_at(value, "claim")?;
     let tolerance = claim.tolerance.or(fallback).map(|d| d.0).unwrap_or(0.0);
@@ -240,9 +271,11 @@ fn read_claim(value: serde_json::Value, fallback: Option<Double>) -> Result<Clai
     .filter(|(_, present)| *present)
     .map(|(name, _)| name.to_string())
     .collect();
+    let arc = claim.arc.as_ref().map(claimed_arc).transpose()?;
     Ok(Claim {
         kind: claim.kind,
         points,
+        arc,
         tolerance: Rational::from_f64(tolerance).unwrap_or_default(),
         unchecked,
     })

@@ -194,6 +194,24 @@ impl Model {
         self.line(role, object, pts);
     }
 
+    /// The shared arc of an `arc` answer: the first curve sampled between the ends'
+    /// parameters on it (64 steps).
+    fn arc(&mut self, c: &Shape, a: &Point, b: &Point) {
+        let (Some(&[ta]), Some(&[tb])) = (
+            a.params.first().map(Vec::as_slice),
+            b.params.first().map(Vec::as_slice),
+        ) else {
+            return;
+        };
+        let at = |i: usize| lerp(ta, tb, i as f64 / 64.0);
+        let pts = match c {
+            Shape::Curve(c) => (0..=64).map(|i| c.point(&at(i))).collect(),
+            Shape::Curve2(c) => (0..=64).map(|i| pad(&c.point(&at(i)))).collect(),
+            _ => return,
+        };
+        self.line(Role::Answer, None, pts);
+    }
+
     fn curve2(&mut self, object: usize, c: &AnyCurve2, samples: usize) {
         let (a, b) = c.domain();
         let pts = (0..=samples)
@@ -608,6 +626,9 @@ fn bounded_answer(m: &mut Model, a: &Answer, input: &Input, boxes: bool) {
             }
         }
         Answer::Arc(s) => {
+            if let Some(c) = input.shapes.first() {
+                m.arc(c, &s.a, &s.b);
+            }
             m.point(MarkerKind::Point, &s.a, boxes);
             m.point(MarkerKind::Point, &s.b, boxes);
         }

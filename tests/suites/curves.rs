@@ -56,5 +56,7 @@ mod space_conics_exact;
 mod space_pairs_exact;
 #[path = "../spline_conic_exact.rs"]
 mod spline_conic_exact;
+#[path = "../verify_arc.rs"]
+mod verify_arc;
 #[path = "../walk_curve.rs"]
 mod walk_curve;

@@ -266,3 +266,36 @@ fn end_point(a: &ExactCurve, (t, s): &(Rational, Rational)) -> Option<Point> {
         ..Default::default()
     })
 }
+
+/// Whether the claimed arc from `(t₀, s₀)` to `(t₁, s₁)` (parameters on `a` and on `b`)
+/// is shared by the two Bézier or NURBS curves: the same exact test as the solver's
+/// (module doc), the affine map `φ` through the two pairs and the polynomial identities
+/// on every stretch between breakpoints, so `Some(true)` proves that `A([t₀, t₁])` and
+/// `B([s₀, s₁])` are one point set. `Some(false)`: no affine map relates them there (a
+/// parameter outside a domain, or the identities fail; the arcs may still be related by
+/// another change of parameter). `None`: a shape is not such a curve, the dimensions
+/// differ, or the arc is one point (`t₀ = t₁` or `s₀ = s₁`).
+pub(crate) fn shares_arc(
+    a: &Shape,
+    b: &Shape,
+    p: &(Rational, Rational),
+    q: &(Rational, Rational),
+) -> Option<bool> {
+    let (ea, eb) = (exact(a)?, exact(b)?);
+    let dim = |c: &ExactCurve| c.pieces.first().map(|p| p.nums.len());
+    if dim(&ea) != dim(&eb) || p.0 == q.0 || p.1 == q.1 {
+        return None;
+    }
+    let within = |c: &ExactCurve, x: &Rational| piece(c, x).is_some();
+    if !(within(&ea, &p.0) && within(&ea, &q.0) && within(&eb, &p.1) && within(&eb, &q.1)) {
+        return Some(false);
+    }
+    let (p, q) = if p.1 < q.1 { (p, q) } else { (q, p) };
+    Some(same_arc(&ea, &eb, p, q))
+}
+
+/// The exact point `X(t)` of a Bézier or NURBS curve (`None`: another shape, or `t`
+/// outside its domain).
+pub(crate) fn exact_point(c: &Shape, t: &Rational) -> Option<Vec<Rational>> {
+    eval(&exact(c)?, t)
+}

@@ -20,6 +20,7 @@
 //! the answer is `exact` or `verified`, or for the simple (non-tangent) points of a
 //! `verified_singular` answer; a singular box may hold no solution of the input.
 
+mod arc;
 mod params;
 mod region;
 
@@ -30,7 +31,7 @@ use rug::Rational;
 
 use crate::certificate::{Certified, Status};
 use crate::num::round::sqrt_rational;
-use crate::ops::answer::{Answer, Point};
+use crate::ops::answer::{Answer, Point, SegmentAnswer};
 use crate::ops::shape::Shape;
 
 /// A claimed point: coordinates, or parameters per object (in the order of the
@@ -41,12 +42,23 @@ pub enum ClaimedPoint {
     Params(Vec<Vec<Rational>>),
 }
 
+/// A claimed shared arc (kind `arc`): its two ends `a` and `b`, and where the claim
+/// gives them, the exact parameters of each end on every object (`exact.params`, else
+/// `params`), which let the arc be checked exactly ([`arc`]).
+#[derive(Debug, Clone, PartialEq)]
+pub struct ClaimedArc {
+    pub ends: [ClaimedPoint; 2],
+    pub params: [Option<Vec<Vec<Rational>>>; 2],
+}
+
 /// A claimed answer in exact numbers.
 #[derive(Debug, Clone, PartialEq, Default)]
 pub struct Claim {
     /// The claimed kind (`points`, `empty`, `inside`, ...).
     pub kind: Option<String>,
     pub points: Vec<ClaimedPoint>,
+    /// A claimed shared arc.
+    pub arc: Option<ClaimedArc>,
     /// The tolerance, a distance in space (≥ 0).
     pub tolerance: Rational,
     /// Claimed items that are not compared (`line`, `segment`, `curves`).
@@ -90,8 +102,9 @@ pub struct ItemVerdict {
 #[derive(Debug, Clone, PartialEq)]
 pub struct Verification {
     pub items: Vec<ItemVerdict>,
-    /// Indices into `truth.value.points()` of the solutions the claim misses.
-    pub missed: Vec<usize>,
+    /// The solutions the claim misses: points of the answer, or the ends of a shared
+    /// arc that no claimed point or end lies within the tolerance of.
+    pub missed: Vec<Point>,
 }
 
 /// A claimed point as regions: one (coordinates), or one per object it gives
@@ -238,20 +251,57 @@ pub fn verify(truth: &Certified<Answer>, shapes: &[Shape], claim: &Claim) -> Ver
         items.push(point_verdict(truth, item, &regions, &truths, &rel));
         relations.push(Some(rel));
     }
-    let missed = if kind == "points" {
-        let points = truth.value.points();
-        (0..points.len())
+    if let Some(a) = &claim.arc {
+        let (verdict, regions) = arc::arc_verdict(truth, shapes, a, &tol2);
+        items.push(verdict);
+        for end in regions.map_or([None, None], |r| r.map(Some)) {
+            relations.push(end.map(|r| truths.iter().map(|t| relation(&r, t, &tol2)).collect()));
+        }
+    }
+    let missed = match &truth.value {
+        Answer::Points(points) => (0..points.len())
             .filter(|&j| exists(truth.status, &points[j]))
             .filter(|&j| {
                 relations
                     .iter()
                     .all(|r| r.as_ref().is_some_and(|r| r[j] == Relation::Beyond))
             })
-            .collect()
-    } else {
-        vec![]
+            .map(|j| points[j].clone())
+            .collect(),
+        Answer::Arc(s) if truth.status != Status::Undecided => {
+            missed_arc_ends(s, shapes, claim, &tol2)
+        }
+        _ => vec![],
     };
     Verification { items, missed }
+}
+
+/// The ends of the true shared arc `s` that every claimed point and claimed arc end
+/// (placed) is proven beyond the tolerance of (none when one cannot be placed).
+fn missed_arc_ends(
+    s: &SegmentAnswer,
+    shapes: &[Shape],
+    claim: &Claim,
+    tol2: &Rational,
+) -> Vec<Point> {
+    let mut placed: Vec<Vec<Region>> = vec![];
+    let ends = claim.arc.iter().flat_map(|a| a.ends.iter());
+    for c in claim.points.iter().chain(ends) {
+        match claim_regions(c, shapes) {
+            Ok(r) => placed.push(r),
+            Err(_) => return vec![],
+        }
+    }
+    [&s.a, &s.b]
+        .into_iter()
+        .filter(|e| {
+            let t = truth_region(e);
+            placed
+                .iter()
+                .all(|c| relation(c, &t, tol2) == Relation::Beyond)
+        })
+        .cloned()
+        .collect()
 }
 
 fn undecided_item(item: String, reason: String) -> ItemVerdict {

@@ -1,0 +1,218 @@
+//! A claimed `arc` (two curves sharing an arc, docs/FORMAT.md "Claims"): its two ends,
+//! each a claimed point, optionally with exact parameters on both curves.
+//!
+//! - **confirmed, exactly**: the claim gives exact parameters `(t, s)` of both ends on
+//!   both curves, and the solver's exact test ([`shares_arc`]: the affine map through
+//!   the two pairs and the polynomial identities on every stretch) proves that
+//!   `A([t₀, t₁])` and `B([s₀, s₁])` are one point set; a claimed end given by `xyz`
+//!   must also lie within the tolerance of its exact point `A(t)`. This holds for a
+//!   part of the shared arc too, whatever the solver found.
+//! - **confirmed**: the answer is a decided `arc` and each claimed end lies within the
+//!   tolerance of a different end of it (the point tests of the module above).
+//! - **refuted**: the answer is decided and complete, and either has no arc (`points`
+//!   or `empty`: finitely many common points), or is an `arc` from which a claimed end
+//!   is proven beyond the tolerance — every box of a cover of the true arc
+//!   ([`off_arc`]) lies beyond it.
+//! - **undecided** otherwise, with the reason.
+
+use rug::Rational;
+
+use super::region::Region;
+use super::{claim_regions, distance, relation, truth_region, ItemVerdict, Relation, Verdict};
+use crate::certificate::{Certified, Status};
+use crate::curve::Curve;
+use crate::num::round::round_rational;
+use crate::num::Interval;
+use crate::ops::algebraic::overlap::{exact_point, shares_arc};
+use crate::ops::answer::{Answer, SegmentAnswer};
+use crate::ops::shape::Shape;
+
+use super::{ClaimedArc, ClaimedPoint};
+
+const ENDS: [&str; 2] = ["a", "b"];
+
+/// The verdict on a claimed arc, and the regions of its ends where they could be
+/// placed (for `missed`).
+pub(super) fn arc_verdict(
+    truth: &Certified<Answer>,
+    shapes: &[Shape],
+    arc: &ClaimedArc,
+    tol2: &Rational,
+) -> (ItemVerdict, Option<[Vec<Region>; 2]>) {
+    let placed = place(arc, shapes);
+    let regions = placed.as_ref().ok().cloned();
+    let verdict = |verdict, status, distance, reason: Option<String>| ItemVerdict {
+        item: "arc".into(),
+        verdict,
+        status,
+        distance,
+        reason,
+    };
+    if proven_exactly(shapes, arc, tol2) {
+        let why = "the claimed arc lies on both curves (exact test of the affine change of \
+                   parameter through its ends)";
+        return (
+            verdict(
+                Verdict::Confirmed,
+                Status::Exact,
+                Some(0.0),
+                Some(why.into()),
+            ),
+            regions,
+        );
+    }
+    let placed = match placed {
+        Ok(p) => p,
+        Err(reason) => {
+            return (
+                verdict(Verdict::Undecided, Status::Undecided, None, Some(reason)),
+                None,
+            )
+        }
+    };
+    if truth.status == Status::Undecided {
+        let why = truth.reason.as_deref().unwrap_or("no reason given");
+        let reason = format!("the answer is undecided ({why})");
+        return (
+            verdict(Verdict::Undecided, Status::Undecided, None, Some(reason)),
+            regions,
+        );
+    }
+    let status = truth.status;
+    let kind = truth.value.kind();
+    let out = match &truth.value {
+        Answer::Arc(s) => {
+            let ends = [truth_region(&s.a), truth_region(&s.b)];
+            let rel = |i: usize, j: usize| relation(&placed[i], &ends[j], tol2);
+            let pairings = [[0, 1], [1, 0]];
+            let within = pairings
+                .iter()
+                .find(|p| (0..2).all(|i| rel(i, p[i]) == Relation::Within));
+            let dist = |p: &[usize; 2]| {
+                (0..2)
+                    .map(|i| distance(&placed[i], &ends[p[i]]))
+                    .fold(0.0, f64::max)
+            };
+            let nearest = pairings.iter().map(dist).fold(f64::INFINITY, f64::min);
+            if let Some(p) = within {
+                verdict(Verdict::Confirmed, status, Some(dist(p)), None)
+            } else if let Some(k) =
+                (0..2).find(|&k| truth.complete && off_arc(shapes, s, &placed[k], tol2))
+            {
+                let why = format!(
+                    "the claimed end `{}` lies beyond the tolerance of the shared arc",
+                    ENDS[k]
+                );
+                verdict(Verdict::Refuted, status, Some(nearest), Some(why))
+            } else {
+                let why = if truth.complete {
+                    "the claimed ends are neither proven within the tolerance of the shared \
+                     arc's ends nor beyond the tolerance of the arc (a part of the arc is \
+                     checked from exact parameters of its ends on both curves)"
+                } else {
+                    "the claimed ends are not within the tolerance of the shared arc's ends, \
+                     and the answer is not complete (other common points were not searched)"
+                };
+                verdict(Verdict::Undecided, status, Some(nearest), Some(why.into()))
+            }
+        }
+        Answer::Points(_) | Answer::Empty if truth.complete => {
+            let why = format!("the curves share no arc: the answer is `{kind}`");
+            verdict(Verdict::Refuted, status, None, Some(why))
+        }
+        _ => {
+            let why = if truth.complete {
+                format!("the answer is `{kind}`; a claimed arc is not compared with it")
+            } else {
+                format!("the answer (`{kind}`) is not complete")
+            };
+            verdict(Verdict::Undecided, status, None, Some(why))
+        }
+    };
+    (out, regions)
+}
+
+/// The claimed ends as regions, or why one cannot be placed.
+fn place(arc: &ClaimedArc, shapes: &[Shape]) -> Result<[Vec<Region>; 2], String> {
+    let end = |k: usize| {
+        claim_regions(&arc.ends[k], shapes).map_err(|r| format!("end `{}`: {r}", ENDS[k]))
+    };
+    Ok([end(0)?, end(1)?])
+}
+
+/// The exact route of the module doc: exact parameters on both curves at both ends,
+/// the arc proven shared, and every end claimed by `xyz` within the tolerance of its
+/// exact point.
+fn proven_exactly(shapes: &[Shape], arc: &ClaimedArc, tol2: &Rational) -> bool {
+    let [a, b] = shapes else {
+        return false;
+    };
+    let pair = |k: usize| -> Option<(Rational, Rational)> {
+        match arc.params[k].as_deref()? {
+            [t, s] if t.len() == 1 && s.len() == 1 => Some((t[0].clone(), s[0].clone())),
+            _ => None,
+        }
+    };
+    let (Some(p), Some(q)) = (pair(0), pair(1)) else {
+        return false;
+    };
+    if shares_arc(a, b, &p, &q) != Some(true) {
+        return false;
+    }
+    [(&arc.ends[0], &p.0), (&arc.ends[1], &q.0)]
+        .iter()
+        .all(|(end, t)| match end {
+            ClaimedPoint::Params(_) => true,
+            ClaimedPoint::Xyz(v) => exact_point(a, t).is_some_and(|x| {
+                relation(&[Region::point(v)], &Region::point(&x), tol2) == Relation::Within
+            }),
+        })
+}
+
+/// Whether the claimed end (its regions) is proven beyond the tolerance of the whole
+/// true arc `A([t_a, t_b])` on the first curve: the parameter interval (rounded
+/// outward from the exact parameters) is bisected, and each piece's interval
+/// evaluation — an enclosure of the arc over it ([`Curve::point`] encloses the curve
+/// over an interval parameter, across knots too) — must be beyond the tolerance of
+/// some region of the claim, or is bisected again (at most 4096 evaluations).
+fn off_arc(shapes: &[Shape], arc: &SegmentAnswer, claim: &[Region], tol2: &Rational) -> bool {
+    let param =
+        |p: &crate::ops::answer::Point| Some(p.exact.as_ref()?.params.first()?.first()?.clone());
+    let (Some(ta), Some(tb), Some(shape)) = (param(&arc.a), param(&arc.b), shapes.first()) else {
+        return false;
+    };
+    let (lo, hi) = if ta <= tb { (ta, tb) } else { (tb, ta) };
+    let enclose = |l: f64, h: f64| -> Option<Region> {
+        let t = Interval::new("t", l, h).ok()?;
+        let v: Vec<Interval> = match shape {
+            Shape::Curve(c) => c.point(&t).to_vec(),
+            Shape::Curve2(c) => c.point(&t).to_vec(),
+            _ => return None,
+        };
+        if v.iter().any(|x| x.is_empty() || !x.is_bounded()) {
+            return None;
+        }
+        let q = |x: f64| Rational::from_f64(x);
+        Some(Region::from_ends(
+            v.iter().map(|x| q(x.lo())).collect(),
+            v.iter().map(|x| q(x.hi())).collect(),
+        ))
+    };
+    let mut work = vec![(round_rational(&lo).lo, round_rational(&hi).hi)];
+    let mut budget = 4096;
+    while let Some((l, h)) = work.pop() {
+        budget -= 1;
+        let Some(cover) = enclose(l, h) else {
+            return false;
+        };
+        if claim.iter().any(|c| c.min_distance2(&cover) > *tol2) {
+            continue;
+        }
+        let m = 0.5 * l + 0.5 * h;
+        if budget == 0 || !(l < m && m < h) {
+            return false;
+        }
+        work.extend([(l, m), (m, h)]);
+    }
+    true
+}
