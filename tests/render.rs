@@ -656,3 +656,29 @@ fn an_unbounded_quadric_is_drawn_by_its_sections_and_its_contour_plane() {
     assert_eq!(mine(Role::Contour), 0);
     assert!(mine(Role::Net) > 10);
 }
+
+/// An `arc` answer is drawn along the curve between its ends, not only as two markers:
+/// `A(t) = (4t, 8t(1 − t))` and its first half share the arc `t ∈ [0, 1/2]`, so every
+/// vertex of the answer's stroke has `0 ≤ x ≤ 2` and `y = 8t(1 − t)` with `t = x/4`.
+#[test]
+fn a_shared_arc_is_drawn_along_the_curve() {
+    let case = r#"{"op": "intersect", "objects": [{"type": "bezier2", "points": [[0, 0], [2, 4], [4, 0]]}, {"type": "bezier2", "points": [[0, 0], [1, 2], [2, 2]]}]}"#;
+    let (scene, c) = solved(case, &RenderOptions::default());
+    assert_eq!(c.value.kind(), "arc");
+    let answer: Vec<_> = scene
+        .strokes
+        .iter()
+        .filter(|s| s.role == Role::Answer)
+        .flat_map(|s| s.source.iter())
+        .collect();
+    assert!(answer.len() > 32, "{}", answer.len());
+    for p in &answer {
+        let t = p[0] / 4.0;
+        assert!((-1e-12..=2.0 + 1e-12).contains(&p[0]), "{p:?}");
+        assert!((p[1] - 8.0 * t * (1.0 - t)).abs() < 1e-9, "{p:?}");
+    }
+    let (lo, hi) = answer
+        .iter()
+        .fold((f64::MAX, f64::MIN), |(l, h), p| (l.min(p[0]), h.max(p[0])));
+    assert!(lo < 1e-9 && hi > 2.0 - 1e-9, "the stroke spans the arc: {lo} … {hi}");
+}
