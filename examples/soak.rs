@@ -10,11 +10,16 @@
 //!   rounding);
 //! - curved: the tangency families of `geocert::robust::curved` (line–sphere,
 //!   line–torus, circle–circle, circle–ellipse, circle–sphere) at gaps 1e-3 … 1e-15,
-//!   1 ulp and 0, graded against MPFR truth (`robust::curved::paths::run`).
+//!   1 ulp and 0, graded against MPFR truth (`robust::curved::paths::run`);
+//! - seams and poles: the families of `geocert::robust::curved::seams` (common points
+//!   exactly on the seam `u = 0 ≡ 2π` of a circle, sphere or torus, at a sphere's poles,
+//!   one ulp or `10⁻ᵏ` off them, and tangencies there at the same gaps), graded the same
+//!   way: every certified box holds one true point (a seam copy twice would be a second
+//!   box on the same truth and a wrong count), a `complete` answer misses none.
 //!
 //! ```sh
-//! GEOCERT_SOAK_LINEAR=1000000 GEOCERT_SOAK_CURVED=20000 GEOCERT_SOAK_THREADS=2 \
-//!     cargo run --release --example soak
+//! GEOCERT_SOAK_LINEAR=1000000 GEOCERT_SOAK_CURVED=20000 GEOCERT_SOAK_SEAMS=20000 \
+//!     GEOCERT_SOAK_THREADS=2 cargo run --release --example soak
 //! ```
 //! `GEOCERT_SOAK_SEED` picks the stream (default 20). The exit status is 1 when any
 //! certificate is wrong or any case panicked. Every failing case is printed with its
@@ -135,23 +140,35 @@ fn linear(t: &mut [Tally], base: u64, i: u64) {
 
 /// Curved case `i`: family, gap and seed, graded against MPFR truth.
 fn curved(t: &mut [Tally], base: u64, i: u64) {
+    curved_of(&Family::ALL, base ^ 0xc0ffee, t, i);
+}
+
+/// Seam and pole case `i` (`geocert::robust::curved::seams`), graded the same way.
+fn seams(t: &mut [Tally], base: u64, i: u64) {
+    curved_of(&Family::SEAMS, base ^ 0x5ea_5ea, t, i);
+}
+
+/// Case `i` of `families` (family, then gap, in turn) from the stream `stream`.
+fn curved_of(families: &[Family], stream: u64, t: &mut [Tally], i: u64) {
     let gaps = Gap::all();
-    let nf = Family::ALL.len() as u64;
-    let f = Family::ALL[(i % nf) as usize];
+    let nf = families.len() as u64;
+    let f = families[(i % nf) as usize];
     let gap = gaps[((i / nf) % gaps.len() as u64) as usize];
-    let s = seed_of(base ^ 0xc0ffee, i);
+    let s = seed_of(stream, i);
     let label = || format!("curved {} gap {} seed {s}", f.name(), gap.label());
-    t[(i % nf) as usize].run(label, || {
-        let case = curved::gen::case(f, gap, s);
-        let o = curved::paths::run(&case);
-        if o.certified_wrong {
-            Verdict::Wrong
-        } else if o.certified_undecided {
-            Verdict::Undecided
-        } else {
-            Verdict::Right
-        }
-    });
+    t[(i % nf) as usize].run(label, || grade(&curved::gen::case(f, gap, s)));
+}
+
+/// A curved case against its truth.
+fn grade(case: &curved::CurvedCase) -> Verdict {
+    let o = curved::paths::run(case);
+    if o.certified_wrong {
+        Verdict::Wrong
+    } else if o.certified_undecided {
+        Verdict::Undecided
+    } else {
+        Verdict::Right
+    }
 }
 
 /// Run `count` cases of `kind` (`families` tallies) on `threads` threads.
@@ -210,10 +227,12 @@ fn main() {
     let n_linear = env("GEOCERT_SOAK_LINEAR", 10_000);
     let n_curved = env("GEOCERT_SOAK_CURVED", 200);
     let threads = env("GEOCERT_SOAK_THREADS", 1).max(1);
+    let n_seams = env("GEOCERT_SOAK_SEAMS", 120);
     let base = env("GEOCERT_SOAK_SEED", 20);
     let start = Instant::now();
     let lin = soak(Construction::ALL.len(), n_linear, threads, base, linear);
     let cur = soak(Family::ALL.len(), n_curved, threads, base, curved);
+    let sea = soak(Family::SEAMS.len(), n_seams, threads, base, seams);
     println!(
         "geocert soak: seed {base}, {threads} thread(s), {:.1} s wall\n",
         start.elapsed().as_secs_f64()
@@ -225,6 +244,8 @@ fn main() {
     print(&names, &lin, &mut total);
     let names: Vec<&str> = Family::ALL.iter().map(|f| f.name()).collect();
     print(&names, &cur, &mut total);
+    let names: Vec<&str> = Family::SEAMS.iter().map(|f| f.name()).collect();
+    print(&names, &sea, &mut total);
     println!(
         "| **total** | {} | {:.1} | {} | {} | {} | {:.1} ms: {} |",
         total.cases,

@@ -51,6 +51,7 @@ fn family_colour(f: Family) -> RGBColor {
         Family::Circle2Circle2 => RGBColor(0, 158, 115),
         Family::Circle2Ellipse2 => RGBColor(204, 121, 167),
         Family::CircleSphere => RGBColor(86, 180, 233),
+        _ => RGBColor(0, 0, 0), // the seam families are not plotted
     }
 }
 

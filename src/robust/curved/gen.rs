@@ -12,7 +12,7 @@ use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
 
 /// Primitive Pythagorean triples `(p, q, h)`.
-const PYTHAGOREAN: [(i64, i64, i64); 10] = [
+pub(super) const PYTHAGOREAN: [(i64, i64, i64); 10] = [
     (3, 4, 5),
     (5, 12, 13),
     (8, 15, 17),
@@ -26,15 +26,15 @@ const PYTHAGOREAN: [(i64, i64, i64); 10] = [
 ];
 
 /// The unit of the dyadic data.
-const UNIT: f64 = 1.0 / (1u64 << 20) as f64;
+pub(super) const UNIT: f64 = 1.0 / (1u64 << 20) as f64;
 
 /// `k·2⁻²⁰` (exact for `|k| < 2⁵³`).
-fn dy(k: i64) -> f64 {
+pub(super) fn dy(k: i64) -> f64 {
     k as f64 * UNIT
 }
 
 /// A random point with coordinates in `[−16, 16]`, multiples of 2⁻²⁰.
-fn point<const D: usize>(rng: &mut Rng) -> [f64; D] {
+pub(super) fn point<const D: usize>(rng: &mut Rng) -> [f64; D] {
     std::array::from_fn(|_| dy(rng.int(-(1 << 24), 1 << 24)))
 }
 
@@ -87,6 +87,7 @@ pub fn case(family: Family, gap: Gap, seed: u64) -> CurvedCase {
         Family::Circle2Circle2 => circles2(&mut rng, gap, side),
         Family::Circle2Ellipse2 => circle_ellipse2(&mut rng, gap, side),
         Family::CircleSphere => circle_sphere(&mut rng, gap, side),
+        _ => super::seams::data(family, &mut rng, gap, side),
     };
     CurvedCase {
         family,

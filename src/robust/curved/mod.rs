@@ -13,6 +13,7 @@
 
 pub mod gen;
 pub mod paths;
+pub mod seams;
 pub mod table;
 pub mod truth;
 
@@ -38,6 +39,22 @@ pub enum Family {
     /// A space circle tangent to a sphere (in a plane through the sphere's centre); the
     /// circle's radius perturbed (§5.2, decided by the numeric certifier).
     CircleSphere,
+    /// Two circles crossing on the seam of the first, or one ulp or `10⁻ᵏ` off it
+    /// ([`seams`], issue 20's soak of seams and poles).
+    SeamCircles2,
+    /// Two circles tangent on a seam; a radius perturbed.
+    SeamTangent2,
+    /// A line crossing a sphere on its seam meridian (or just off it), or tangent at the
+    /// seam point of its equator.
+    SeamLineSphere,
+    /// A sphere's axis as a line (hits at the poles, or just off them), or a line
+    /// tangent at a pole.
+    PoleLineSphere,
+    /// A circle through both poles of a sphere (or just off them), or tangent to it at
+    /// a pole or on the seam.
+    PoleCircleSphere,
+    /// A line crossing a torus on its seams, or tangent to it on the seam.
+    SeamLineTorus,
 }
 
 impl Family {
@@ -49,6 +66,16 @@ impl Family {
         Family::CircleSphere,
     ];
 
+    /// The seam and pole families ([`seams`]; not in the benchmark table).
+    pub const SEAMS: [Family; 6] = [
+        Family::SeamCircles2,
+        Family::SeamTangent2,
+        Family::SeamLineSphere,
+        Family::PoleLineSphere,
+        Family::PoleCircleSphere,
+        Family::SeamLineTorus,
+    ];
+
     /// The name in the table, the JSON and the plots' legends.
     pub fn name(self) -> &'static str {
         match self {
@@ -57,6 +84,12 @@ impl Family {
             Family::Circle2Circle2 => "circle2-circle2",
             Family::Circle2Ellipse2 => "circle2-ellipse2",
             Family::CircleSphere => "circle-sphere",
+            Family::SeamCircles2 => "seam circle2-circle2",
+            Family::SeamTangent2 => "seam tangent circle2-circle2",
+            Family::SeamLineSphere => "seam line-sphere",
+            Family::PoleLineSphere => "pole line-sphere",
+            Family::PoleCircleSphere => "pole circle-sphere",
+            Family::SeamLineTorus => "seam line-torus",
         }
     }
 }

@@ -43,7 +43,8 @@ pub struct Outcome {
     /// The certified answer claims something false: a simple box (of a status other
     /// than `undecided`) not holding exactly one true point, a singular box holding more
     /// than two (with multiplicity), or with `complete` a true point outside every box,
-    /// or an `exact`/`verified` count or tangency that is not the truth's.
+    /// or an `exact`/`verified` count or tangency that is not the truth's, or two simple
+    /// boxes on one true point (a solution reported twice, e.g. once per side of a seam).
     pub certified_wrong: bool,
     /// `undecided`, or not `complete`, or an error from the front door.
     pub certified_undecided: bool,
@@ -150,6 +151,19 @@ fn holds(c: &crate::Certified<Answer>, truth: &Truth, scale: f64) -> bool {
         }
     };
     if !points.iter().all(box_holds) {
+        return false;
+    }
+    // Two simple boxes on one true point: a solution reported twice (a seam copy).
+    let simple = |p: &&crate::ops::Point| p.multiplicity == 1 && !p.tangent;
+    let twice = truth.points.iter().any(|t| {
+        points
+            .iter()
+            .filter(simple)
+            .filter(|p| boxed(p, &t.xyz))
+            .count()
+            > 1
+    });
+    if twice {
         return false;
     }
     if !c.complete {
