@@ -156,3 +156,52 @@ proptest! {
         prop_assert_eq!(r["missed"].as_array().unwrap().is_empty(), expect == "confirmed");
     }
 }
+
+/// A claimed point with the wrong number of coordinates is malformed (issue 20, "in
+/// `verify`, a claimed point of the wrong dimension is a format error, not a
+/// refutation"): a family over plane and space cases, claimed points and arc ends, 1 to
+/// 5 coordinates — the right count is verified, every other one is a `count_mismatch`
+/// error naming the claimed point's `xyz`.
+#[test]
+fn a_claimed_point_of_the_wrong_dimension_is_an_error_naming_it() {
+    let space = json!([{"type": "line", "origin": [0, 0, 0], "dir": [1, 0, 0]},
+                       {"type": "plane", "normal": [1, 0, 0], "d": -1}]);
+    let plane = json!([{"type": "line2", "origin": [0, 0], "dir": [1, 0]},
+                       {"type": "circle2", "center": [0, 0], "radius": 1}]);
+    let arc = json!([{"type": "bezier2", "points": [[0, 0], [2, 4], [4, 0]]},
+                     {"type": "bezier2", "points": [[0, 0], [1, 2], [2, 2]]}]);
+    let mut seen = 0;
+    for (objects, dim) in [(&space, 3), (&plane, 2), (&arc, 2)] {
+        for n in 1..=5usize {
+            for slot in 0..3 {
+                let xyz: Vec<f64> = (0..n).map(|k| if k == 0 { 1.0 } else { 0.0 }).collect();
+                let good: Vec<f64> = (0..dim).map(|k| if k == 0 { 1.0 } else { 0.0 }).collect();
+                let (claim, field) = match slot {
+                    0 => (
+                        json!({"points": [{"xyz": good}, {"xyz": xyz}]}),
+                        "claim.points[1].xyz",
+                    ),
+                    1 => (
+                        json!({"arc": {"a": {"xyz": xyz}, "b": {"xyz": good}}}),
+                        "claim.arc.a.xyz",
+                    ),
+                    _ => (
+                        json!({"arc": {"a": {"xyz": good}, "b": {"xyz": xyz}}}),
+                        "claim.arc.b.xyz",
+                    ),
+                };
+                let r = verify(json!({"op": "intersect", "objects": objects, "claim": claim}));
+                if n == dim {
+                    assert_ne!(r["status"], "error", "{r}");
+                    assert!(r["claims"].as_array().is_some_and(|c| !c.is_empty()), "{r}");
+                } else {
+                    assert_eq!(r["status"], "error", "{claim}: {r}");
+                    assert_eq!(r["error"]["kind"], "count_mismatch", "{r}");
+                    assert_eq!(r["error"]["field"], field, "{r}");
+                    seen += 1;
+                }
+            }
+        }
+    }
+    assert_eq!(seen, 3 * 4 * 3);
+}

@@ -680,5 +680,8 @@ fn a_shared_arc_is_drawn_along_the_curve() {
     let (lo, hi) = answer
         .iter()
         .fold((f64::MAX, f64::MIN), |(l, h), p| (l.min(p[0]), h.max(p[0])));
-    assert!(lo < 1e-9 && hi > 2.0 - 1e-9, "the stroke spans the arc: {lo} … {hi}");
+    assert!(
+        lo < 1e-9 && hi > 2.0 - 1e-9,
+        "the stroke spans the arc: {lo} … {hi}"
+    );
 }

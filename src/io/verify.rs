@@ -128,6 +128,9 @@ pub fn verify_case(read: ReadCase) -> CaseResult {
         Ok(t) => t,
         Err(e) => return CaseResult::error(case.id.clone(), &e),
     };
+    if let Err(e) = dimensions(&claim, &shapes) {
+        return CaseResult::error(case.id.clone(), &e);
+    }
     let checked = verify(&truth, &shapes, &claim);
     if !keep_exact {
         crate::ops::beyond_range::keep_exact_beyond_range(&mut truth.value);
@@ -149,6 +152,39 @@ pub fn verify_case(read: ReadCase) -> CaseResult {
     );
     record.micros = Some(start.elapsed().as_micros() as u64);
     record
+}
+
+/// A claimed point by coordinates has as many as the case's points (2 for plane
+/// objects, else 3): a claim of the wrong dimension is malformed, not refuted.
+fn dimensions(claim: &Claim, shapes: &[Shape]) -> Result<(), GeomError> {
+    let dim = if !shapes.is_empty() && shapes.iter().all(Shape::is_2d) {
+        2
+    } else {
+        3
+    };
+    let points = claim
+        .points
+        .iter()
+        .enumerate()
+        .map(|(i, p)| (format!("claim.points[{i}]"), p));
+    let ends = claim.arc.iter().flat_map(|a| {
+        a.ends
+            .iter()
+            .zip(["a", "b"])
+            .map(|(p, k)| (format!("claim.arc.{k}"), p))
+    });
+    for (field, p) in points.chain(ends) {
+        if let ClaimedPoint::Xyz(v) = p {
+            if v.len() != dim {
+                return Err(GeomError::CountMismatch {
+                    field: format!("{field}.xyz"),
+                    expected: format!("{dim} coordinates (the case's objects are {dim}D)"),
+                    found: v.len().to_string(),
+                });
+            }
+        }
+    }
+    Ok(())
 }
 
 /// The objects a claim's `params` refer to: the operands of `intersect`, the `onto` of

@@ -340,6 +340,16 @@ impl Shape {
         }
     }
 
+    /// Whether the shape lies in the plane (2D: `line2`, `segment2`, plane curves and
+    /// conics), so that its points have two coordinates.
+    pub fn is_2d(&self) -> bool {
+        match self {
+            Shape::Curve2(_) | Shape::Conic2(_) => true,
+            Shape::Linear(l) => matches!(l.type_name(), "line2" | "segment2"),
+            _ => false,
+        }
+    }
+
     /// Whether the shape is curved (a curve, a conic or a surface).
     pub fn is_curved(&self) -> bool {
         matches!(

@@ -392,7 +392,7 @@ fn unbounded(s: &AnySurface) -> bool {
 /// drawn in the plane `z = 0`.
 pub fn model(input: &Input, opts: &RenderOptions) -> Result<Model, GeomError> {
     let mut m = Model {
-        plane: input.shapes.iter().all(is_2d) && !input.shapes.is_empty(),
+        plane: input.shapes.iter().all(Shape::is_2d) && !input.shapes.is_empty(),
         ..Model::default()
     };
     let samples = opts.samples.max(8);
@@ -575,14 +575,6 @@ fn line_parts(l: &Linear) -> Option<LineParts> {
 
 fn sub(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
     [a[0] - b[0], a[1] - b[1], a[2] - b[2]]
-}
-
-fn is_2d(s: &Shape) -> bool {
-    match s {
-        Shape::Curve2(_) | Shape::Conic2(_) => true,
-        Shape::Linear(l) => matches!(l.type_name(), "line2" | "segment2"),
-        _ => false,
-    }
 }
 
 /// The answer's bounded parts: points, curves, singular points, blends, guides.
