@@ -156,7 +156,7 @@ fn curved_of(families: &[Family], stream: u64, t: &mut [Tally], i: u64) {
     let gap = gaps[((i / nf) % gaps.len() as u64) as usize];
     let s = seed_of(stream, i);
     let label = || format!("curved {} gap {} seed {s}", f.name(), gap.label());
-    t[(i % nf) as usize].run(label, || grade(&curved::gen::case(f, gap, s)));
+    t[(i % nf) as usize].run(label, || grade(&curved::case(f, gap, s)));
 }
 
 /// A curved case against its truth.

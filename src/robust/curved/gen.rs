@@ -7,7 +7,7 @@
 //! exactly tangent configuration is therefore exactly tangent in doubles (checked
 //! against the exact truth in the tests of [`super::truth`]).
 
-use super::{CurvedCase, Data, Family, Gap};
+use super::{Data, Family, Gap};
 use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
 
@@ -73,27 +73,26 @@ pub fn perturb(r: f64, gap: Gap, side: i8) -> f64 {
     }
 }
 
-/// Case `seed` of `family` at `gap`.
-pub fn case(family: Family, gap: Gap, seed: u64) -> CurvedCase {
+/// The generator of case `seed` at `gap`, and its side (`+1`, `−1`, or `0` at
+/// tangency), drawn first.
+pub(super) fn start(gap: Gap, seed: u64) -> (Rng, i8) {
     let mut rng = Rng::new(seed);
     let side = match gap {
         Gap::Tangent => 0,
         _ if rng.coin() => 1,
         _ => -1,
     };
-    let data = match family {
-        Family::LineSphere => line_sphere(&mut rng, gap, side),
-        Family::LineTorus => line_torus(&mut rng, gap, side),
-        Family::Circle2Circle2 => circles2(&mut rng, gap, side),
-        Family::Circle2Ellipse2 => circle_ellipse2(&mut rng, gap, side),
-        Family::CircleSphere => circle_sphere(&mut rng, gap, side),
-        _ => super::seams::data(family, &mut rng, gap, side),
-    };
-    CurvedCase {
-        family,
-        gap,
-        side,
-        data,
+    (rng, side)
+}
+
+/// The data of a tangency family's case (the seam families: [`super::seams`]).
+pub(super) fn data(family: Family, rng: &mut Rng, gap: Gap, side: i8) -> Data {
+    match family {
+        Family::LineSphere => line_sphere(rng, gap, side),
+        Family::LineTorus => line_torus(rng, gap, side),
+        Family::Circle2Circle2 => circles2(rng, gap, side),
+        Family::Circle2Ellipse2 => circle_ellipse2(rng, gap, side),
+        _ => circle_sphere(rng, gap, side),
     }
 }
 

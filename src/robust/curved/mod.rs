@@ -17,8 +17,24 @@ pub mod seams;
 pub mod table;
 pub mod truth;
 
-pub use gen::case;
 pub use table::{curved_table, CurvedRow, CurvedTable};
+
+/// Case `seed` of `family` at `gap` ([`gen`] for the tangency families, [`seams`] for
+/// the seam and pole ones).
+pub fn case(family: Family, gap: Gap, seed: u64) -> CurvedCase {
+    let (mut rng, side) = gen::start(gap, seed);
+    let data = if Family::SEAMS.contains(&family) {
+        seams::data(family, &mut rng, gap, side)
+    } else {
+        gen::data(family, &mut rng, gap, side)
+    };
+    CurvedCase {
+        family,
+        gap,
+        side,
+        data,
+    }
+}
 
 /// The families of the curved benchmark.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Hash)]
