@@ -293,7 +293,7 @@ fn circle3(g: &mut Gen, turned: bool) -> (Ellipse<3>, f64) {
 fn nurbs_circles_in_space_against_spheres() {
     let mut g = Gen::new(2134);
     let mut fails = Failures::default();
-    let mut tried = 0;
+    let (mut tried, mut spent) = (0, 0);
     for i in 0..cases(45) {
         let m = [1.0, 1.0, 1.0, magnitude(g.below(4))][i % 4];
         let (e0, rho0) = circle3(&mut g, true);
@@ -311,9 +311,6 @@ fn nurbs_circles_in_space_against_spheres() {
         } else {
             (g.vec(-2.0, 2.0, 3), g.dyadic(0.5, 3.0, 4))
         };
-        if !runs((i % 3 == 0).then_some("nurbs_knot_point_budget")) {
-            continue;
-        }
         let (e, s, r, rho) = (e0.scaled(m), s0.map(|x| x * m), r0 * m, rho0 * m);
         let cs: Vec<f64> = (0..3).map(|j| e.c[j] - s[j]).collect(); // exact: dyadic
         let alpha = dot(&e.a, &cs) * 2u32;
@@ -335,11 +332,27 @@ fn nurbs_circles_in_space_against_spheres() {
             .iter()
             .map(|[x, y]| vec![circle_param(x, y)])
             .collect();
-        fails.check(check(&res, &pts, &[(0, tc)]), &case, &res);
+        if budget_spent(&res) {
+            // Known limit (tests/README.md): the interval NURBS is wide over a long
+            // span, and a span's search may spend its budget; what it reports must
+            // still be right.
+            fails.check(
+                sound_but_incomplete(&res, &point_boxes(&res), &snap_all(pts)),
+                &case,
+                &res,
+            );
+            spent += 1;
+        } else {
+            fails.check(check(&res, &pts, &[(0, tc)]), &case, &res);
+        }
         tried += 1;
     }
     fails.finish("nurbs_circles_in_space_against_spheres");
     assert!(tried * 2 >= cases(45), "{tried}");
+    assert!(
+        spent * 3 <= tried,
+        "{spent} of {tried} spent their box budget"
+    );
 }
 
 /// The crossings of the circles `|p − c₁| = r₁`, `|p − c₂| = r₂` (closed form).

@@ -205,14 +205,11 @@ fn sphere_params(p: &[Float], c: [f64; 3], r: f64) -> Vec<Float> {
 fn lines_across_a_nurbs_sphere() {
     let mut g = Gen::new(2141);
     let mut fails = Failures::default();
-    let mut tried = 0;
+    let (mut tried, mut spent) = (0, 0);
     for i in 0..cases(24) {
         let m = [1.0, 1.0, 1.0, magnitude(g.below(4))][i % 4];
         let k = g.dyadic(0.125, 0.5, 3);
         let c: [f64; 3] = g.vec(-2.0, 2.0, 3);
-        if !runs((i % 2 == 0).then_some("nurbs_knot_root_with_irrational_partner")) {
-            continue;
-        }
         let q = if i % 2 == 0 {
             knot_point(&mut g, k)
         } else {
@@ -240,11 +237,26 @@ fn lines_across_a_nurbs_sphere() {
         );
         let res = solve(&case);
         let params = truths.iter().map(|p| sphere_params(p, c, r)).collect();
-        fails.check(check(&res, &truths, Some((1, params))), &case, &res);
+        if budget_spent(&res) {
+            // Known limit (tests/README.md): sound, not complete.
+            let t = snap_all(truths.clone());
+            fails.check(
+                sound_but_incomplete(&res, &point_boxes(&res), &t),
+                &case,
+                &res,
+            );
+            spent += 1;
+        } else {
+            fails.check(check(&res, &truths, Some((1, params))), &case, &res);
+        }
         tried += 1;
     }
     fails.finish("lines_across_a_nurbs_sphere");
     assert!(tried * 4 >= cases(24), "{tried}");
+    assert!(
+        spent * 4 <= tried,
+        "{spent} of {tried} spent their box budget"
+    );
 }
 
 /// Lines against a NURBS cylinder of radius `5k`, height `[h₀, h₁]`: through a
@@ -262,9 +274,6 @@ fn lines_across_a_nurbs_cylinder() {
         let h = [g.dyadic(-3.0, -1.0, 3), g.dyadic(1.0, 3.0, 3)];
         let q = if i % 2 == 0 {
             let [x, y] = [[3.0, 4.0], [4.0, -3.0], [-5.0, 0.0], [0.0, 5.0]][g.below(4)];
-            if !runs((x == 0.0 || y == 0.0).then_some("nurbs_knot_root_with_irrational_partner")) {
-                continue;
-            }
             [x * k, y * k, g.dyadic(-0.5, 0.5, 3)]
         } else {
             let mut q: [f64; 3] = g.vec(-2.0 * k, 2.0 * k, 5);

@@ -44,7 +44,7 @@ pub fn subdivide<S: System, I: CertInterval>(
             break;
         }
         let vol = boxes::volume(&x);
-        if excluded_by_image(&image(sys, &x), n) {
+        if excluded_by_image(&image(sys, &x), n) || excluded_by_implied(sys, &x) {
             ledger.exclude(vol, bits);
             continue;
         }
@@ -64,6 +64,13 @@ pub fn subdivide<S: System, I: CertInterval>(
         }
     }
     stuck
+}
+
+/// One of [`System::implied`]'s values is proven nonzero over `x`: no root there.
+fn excluded_by_implied<S: System, I: CertInterval>(sys: &S, x: &[I]) -> bool {
+    sys.implied(x)
+        .iter()
+        .any(|v| v.is_empty() || !v.contains_zero())
 }
 
 /// Krawczyk on `x` grown by a sixteenth (then on `x` itself if the system is not smooth

@@ -35,6 +35,17 @@ pub trait System {
     fn jacobian<T: Real>(&self, x: &[T]) -> Vec<Vec<T>> {
         self.eval_with_jacobian(x).1
     }
+
+    /// Values that vanish at every root of the system (consequences of `F = 0`, such
+    /// as the implicit form of a surface at the curve's point, which holds wherever
+    /// the curve meets the surface): a box over which one of them is proven nonzero
+    /// holds no root, and is excluded at once even where `F`'s own image, wide in the
+    /// other unknowns, still holds 0. For interval `T` each value must enclose the
+    /// exact one over the box. Default: none (only `F` itself).
+    fn implied<T: Real>(&self, x: &[T]) -> Vec<T> {
+        let _ = x;
+        Vec::new()
+    }
 }
 
 /// `(F, J)` from fixed-size arrays, for `eval_with_jacobian` overrides that evaluate an

@@ -77,6 +77,9 @@ impl Surface for AnySurface {
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         each_surface!(self, s => s.jet(u, v, order))
     }
+    fn implicit_value<T: Real>(&self, x: &[T; 3]) -> Option<T> {
+        each_surface!(self, s => s.implicit_value(x))
+    }
     fn step_rules(&self) -> [StepRule; 2] {
         each_surface!(self, s => s.step_rules())
     }

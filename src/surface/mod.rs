@@ -52,6 +52,18 @@ pub enum StepRule {
     WholeRange,
 }
 
+/// [`Surface::implicit_value`] of a surface by its [`Implicit`] form (used inside the
+/// `impl Surface` blocks of the surfaces that have one).
+macro_rules! implicit_value_by_form {
+    () => {
+        /// The implicit form (§1.6), which vanishes on the whole surface.
+        fn implicit_value<T: Real>(&self, x: &[T; 3]) -> Option<T> {
+            Some(<Self as crate::surface::Implicit<3>>::implicit_jet(self, x, 0).value)
+        }
+    };
+}
+pub(crate) use implicit_value_by_form;
+
 /// A parametric surface `s(u, v)` on a rectangle `[u_min, u_max] × [v_min, v_max]`.
 pub trait Surface {
     /// `([u_min, u_max], [v_min, v_max])`, each non-empty.
@@ -119,6 +131,15 @@ pub trait Surface {
     where
         Self: Sized,
     {
+        None
+    }
+
+    /// A function of space that vanishes at `s(u, v)` for every real `(u, v)` (the
+    /// implicit form of §1.6, [`Implicit`]), at `x`: for interval `x` an enclosure of
+    /// its values over the box; `None` for surfaces without one (patches, motion
+    /// surfaces). Used as a necessary condition ([`crate::certify::System::implied`]).
+    fn implicit_value<T: Real>(&self, x: &[T; 3]) -> Option<T> {
+        let _ = x;
         None
     }
 

@@ -55,6 +55,7 @@ impl Plane {
 }
 
 impl Surface for Plane {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
@@ -137,6 +138,7 @@ impl ParaboloidRect {
 }
 
 impl Surface for ParaboloidRect {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }

@@ -81,6 +81,7 @@ impl Sphere {
 domain_accessors!(Sphere);
 
 impl Surface for Sphere {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
@@ -132,6 +133,7 @@ impl Ellipsoid {
 domain_accessors!(Ellipsoid);
 
 impl Surface for Ellipsoid {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
@@ -198,6 +200,7 @@ impl Hyperboloid {
 domain_accessors!(Hyperboloid);
 
 impl Surface for Hyperboloid {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
@@ -253,6 +256,7 @@ impl Paraboloid {
 domain_accessors!(Paraboloid);
 
 impl Surface for Paraboloid {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
@@ -307,6 +311,7 @@ impl Cylinder {
 domain_accessors!(Cylinder);
 
 impl Surface for Cylinder {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }
@@ -376,6 +381,7 @@ impl Cone {
 domain_accessors!(Cone);
 
 impl Surface for Cone {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }

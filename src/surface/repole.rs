@@ -135,6 +135,10 @@ impl<S: SphereMapped> Surface for Repole<S> {
     fn v_poles(&self) -> [bool; 2] {
         [true, true]
     }
+    /// The surface's own: `R̃(α, λ) = R(u, v)` is a point of it (module doc).
+    fn implicit_value<T: Real>(&self, x: &[T; 3]) -> Option<T> {
+        self.surface.implicit_value(x)
+    }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let k = self.surface.sphere_scales();
         let local: Vec<[T; 3]> = self

@@ -69,6 +69,7 @@ impl Torus {
 }
 
 impl Surface for Torus {
+    super::implicit_value_by_form!();
     fn domain(&self) -> ([f64; 2], [f64; 2]) {
         self.domain
     }

@@ -17,7 +17,7 @@
 
 use super::{shifted_inside, CertifiedRoot, Unknowns};
 use crate::certificate::Status;
-use crate::certify::{joined, System};
+use crate::certify::{joined, System, UndecidedBox};
 use crate::num::round::{next_down, next_up};
 use crate::num::{Interval, Real};
 
@@ -88,35 +88,126 @@ pub fn across<S: System>(
             i += 1;
             continue;
         };
-        let clash = roots.iter().enumerate().any(|(k, r)| {
-            k != i
-                && meets_shifted(&r.enclosure, &region, whole)
-                && !shifted_inside(&r.enclosure, &region, whole)
-        });
-        if clash {
+        let old = roots[i].clone();
+        if install(roots, Some(i), &region, e, &old.params, old.bits, whole) {
+            i = 0; // the list changed: look again from the start
+        } else {
             i += 1;
-            continue;
         }
-        let old = &roots[i];
-        let params = old
-            .params
-            .iter()
-            .zip(&e)
-            .map(|(&p, b)| if b.contains(p) { p } else { b.midpoint() })
-            .collect();
-        let root = CertifiedRoot {
-            params,
-            enclosure: e,
-            status: Status::Verified,
-            max_roots: 1,
-            bits: old.bits.max(53),
-            perturbation: None,
-            reason: None,
-        };
-        roots.retain(|r| !shifted_inside(&r.enclosure, &region, whole));
-        roots.push(root);
-        i = 0; // the list changed: look again from the start
     }
+}
+
+/// Boxes the search left undecided (a cluster on a knot line that no smooth Krawczyk
+/// test could prove, at every precision), decided across the knot where they meet
+/// one: a box that touches a face between tiles from one side (a knot span's own
+/// search ends there) is mirrored across it first. A box is decided when a root is
+/// proven unique in a region that holds it: every root of the box is that root, which
+/// is added to `roots` (once: boxes and roots inside the region are its copies).
+/// Returns the boxes still undecided.
+pub fn decide_boxes<S: System>(
+    tiles: &[(S, Unknowns)],
+    whole: &Unknowns,
+    roots: &mut Vec<CertifiedRoot>,
+    undecided: Vec<UndecidedBox>,
+) -> Vec<UndecidedBox> {
+    let mut regions: Vec<Vec<Interval>> = Vec::new();
+    let mut left = Vec::new();
+    for b in undecided {
+        let x = &b.enclosure;
+        if regions.iter().any(|r| shifted_inside(x, r, whole)) {
+            continue; // decided with an earlier box
+        }
+        let decided = across_face(tiles, x).and_then(|start| {
+            let (region, e) = prove(tiles, whole, &start)?;
+            let mid: Vec<f64> = e.iter().map(Interval::midpoint).collect();
+            (shifted_inside(x, &region, whole) && install(roots, None, &region, e, &mid, 53, whole))
+                .then_some(region)
+        });
+        match decided {
+            Some(region) => regions.push(region),
+            None => left.push(b),
+        }
+    }
+    left
+}
+
+/// `x`, mirrored across a face between tiles that it touches from one side (its
+/// lower or upper bound is the face), so that the face lies inside it; `x` itself
+/// when a face already does; `None` when it meets no face.
+fn across_face<S>(tiles: &[(S, Unknowns)], x: &[Interval]) -> Option<Vec<Interval>> {
+    for i in 0..x.len() {
+        let faces = tiles
+            .iter()
+            .filter(|(_, u)| !u.periodic[i])
+            .flat_map(|(_, u)| u.domain[i])
+            .filter(|b| {
+                tiles
+                    .iter()
+                    .any(|(_, u)| !u.periodic[i] && u.domain[i][1] == *b)
+            })
+            .filter(|b| {
+                tiles
+                    .iter()
+                    .any(|(_, u)| !u.periodic[i] && u.domain[i][0] == *b)
+            });
+        for b in faces {
+            let (lo, hi) = (x[i].lo(), x[i].hi());
+            let side = if lo < b && b < hi {
+                x[i]
+            } else if hi == b {
+                Interval::from_bounds(lo, b) + Interval::from_bounds(0.0, b - lo)
+            } else if lo == b {
+                Interval::from_bounds(b, hi) - Interval::from_bounds(0.0, hi - b)
+            } else {
+                continue;
+            };
+            let mut y = x.to_vec();
+            y[i] = side;
+            return Some(y);
+        }
+    }
+    None
+}
+
+/// The root proven unique in `region` (enclosure `e`; estimate `params` where `e`
+/// holds them, else its midpoint) added to `roots` in place of every root whose box
+/// lies in `region` (their copies; `replacing` is the undecided root it was proven
+/// from). `false`, and nothing changed, when another root's box meets `region`
+/// without lying in it (the two might be one root reported twice).
+fn install(
+    roots: &mut Vec<CertifiedRoot>,
+    replacing: Option<usize>,
+    region: &[Interval],
+    e: Vec<Interval>,
+    params: &[f64],
+    bits: u32,
+    whole: &Unknowns,
+) -> bool {
+    let clash = roots.iter().enumerate().any(|(k, r)| {
+        Some(k) != replacing
+            && meets_shifted(&r.enclosure, region, whole)
+            && !shifted_inside(&r.enclosure, region, whole)
+    });
+    if clash {
+        return false;
+    }
+    let params = params
+        .iter()
+        .zip(&e)
+        .map(|(&p, b)| if b.contains(p) { p } else { b.midpoint() })
+        .collect();
+    let root = CertifiedRoot {
+        params,
+        enclosure: e,
+        status: Status::Verified,
+        max_roots: 1,
+        bits: bits.max(53),
+        perturbation: None,
+        reason: None,
+    };
+    roots.retain(|r| !shifted_inside(&r.enclosure, region, whole));
+    roots.push(root);
+    true
 }
 
 /// One root proven in a region around `start`: `(region, enclosure)` in the original
@@ -152,6 +243,14 @@ fn prove<S: System>(
         }
         tiles
             .iter()
+            .filter(|(_, u)| {
+                // Tiles further on in the cut's coordinate do not meet the box (checked
+                // above); their stretched ranges are not computed, so they are left out
+                // (taken with the far tile's range they would add a wrong part).
+                cut.is_none_or(|c| {
+                    u.periodic[c.i] || u.domain[c.i][0] == c.b || u.domain[c.i][1] == c.b
+                })
+            })
             .filter_map(|(sys, u)| {
                 let far = cut.filter(|c| !u.periodic[c.i] && u.domain[c.i][0] >= c.b);
                 let part: Option<Vec<Interval>> = s

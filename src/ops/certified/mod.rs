@@ -161,6 +161,8 @@ pub fn certify_roots_with<S: System>(
 /// own undecided boxes), the precision used and the reason the search stopped short.
 pub(crate) struct Found {
     pub roots: Vec<CertifiedRoot>,
+    /// The boxes the search left undecided (empty exactly when `searched`).
+    pub undecided: Vec<certify::UndecidedBox>,
     pub searched: bool,
     pub bits: u32,
     pub reason: Option<String>,
@@ -197,6 +199,7 @@ pub(crate) fn find_roots<S: System>(
         }
     }
     let complete = solved.complete;
+    let undecided = solved.value.undecided.clone();
     let mut bits = solved.bits;
     let mut reason = solved.reason.clone();
     if !complete {
@@ -248,6 +251,7 @@ pub(crate) fn find_roots<S: System>(
     seam::drop_seam_copies(sys, &mut roots, unknowns);
     Ok(Found {
         roots,
+        undecided,
         searched: complete,
         bits,
         reason,

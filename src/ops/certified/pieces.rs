@@ -77,6 +77,7 @@ pub fn certify_roots_in_pieces<S: System>(
         ..opts.clone()
     };
     let mut roots: Vec<CertifiedRoot> = Vec::new();
+    let mut undecided = Vec::new();
     let (mut searched, mut bits, mut reason) = (true, 53, None);
     for (sys, unknowns) in pieces {
         let mine: Vec<Vec<f64>> = guesses
@@ -90,6 +91,7 @@ pub fn certify_roots_in_pieces<S: System>(
             .collect();
         let part = super::find_roots(sys, unknowns, &mine, &share, not_an_answer)?;
         searched &= part.searched;
+        undecided.extend(part.undecided);
         bits = bits.max(part.bits);
         if reason.is_none() {
             reason = part.reason;
@@ -99,7 +101,13 @@ pub fn certify_roots_in_pieces<S: System>(
             merge(&mut roots, before, root, whole);
         }
     }
-    Ok(finish(roots, tiles, whole, searched, bits, reason))
+    let search = Search {
+        undecided,
+        searched,
+        bits,
+        reason,
+    };
+    Ok(finish(roots, tiles, whole, search))
 }
 
 /// Every root of `sys` over `whole`, searched as one system (not split), whose roots
@@ -114,29 +122,50 @@ pub fn certify_roots_across<S: System>(
     opts: &Options,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
     let found = super::find_roots(sys, whole, guesses, opts, |_| false)?;
-    let (searched, bits) = (found.searched, found.bits);
-    Ok(finish(
-        found.roots,
-        Some(tiles),
-        whole,
-        searched,
-        bits,
-        found.reason,
-    ))
+    let search = Search {
+        undecided: found.undecided,
+        searched: found.searched,
+        bits: found.bits,
+        reason: found.reason,
+    };
+    Ok(finish(found.roots, Some(tiles), whole, search))
 }
 
-/// The roots proven across `tiles` where given, then the answer: complete when the
-/// search covered the box and no root is undecided.
+/// What the searches of the pieces left: their undecided boxes, whether they covered
+/// their boxes (`searched`: no undecided box), the precision and the first reason.
+struct Search {
+    undecided: Vec<crate::certify::UndecidedBox>,
+    searched: bool,
+    bits: u32,
+    reason: Option<String>,
+}
+
+/// The roots and the undecided boxes of the search proven across `tiles` where given
+/// ([`super::across`]), then the answer: complete when every box the search left is
+/// decided and no root is undecided.
 fn finish<S: System>(
     mut roots: Vec<CertifiedRoot>,
     tiles: Option<&[(S, Unknowns)]>,
     whole: &Unknowns,
-    searched: bool,
-    bits: u32,
-    mut reason: Option<String>,
+    search: Search,
 ) -> Certified<Vec<CertifiedRoot>> {
+    let Search {
+        undecided,
+        mut searched,
+        bits,
+        mut reason,
+    } = search;
     if let Some(tiles) = tiles {
         super::across::across(tiles, whole, &mut roots);
+        let before = undecided.len();
+        let left = super::across::decide_boxes(tiles, whole, &mut roots, undecided);
+        // The search's incompleteness is exactly its undecided boxes.
+        searched = left.is_empty();
+        if left.len() < before {
+            reason = left
+                .first()
+                .map(|b| format!("{} undecided box(es); first: {}", left.len(), b.reason));
+        }
     }
     if let Some(r) = roots.iter().find(|r| r.status == Status::Undecided) {
         reason.get_or_insert_with(|| {

@@ -352,6 +352,16 @@ impl<S: Surface, C: Curve<3>> System for CurveSurfaceSystem<'_, S, C> {
         let (f, j) = curve_surface_equations(self.surface, self.curve, &x, true);
         value_and_rows(f, j)
     }
+    /// The surface's implicit form at the curve's point, `F(c(t))`: it vanishes at
+    /// every root (`c(t) = s(u, v)` lies on the surface), and excludes a box by its
+    /// `t`-range alone, whatever its `(u, v)` (a curve near a sphere along an arc left
+    /// thousands of boxes wide in `u, v` to the subdivision, issue 21).
+    fn implied<T: Real>(&self, x: &[T]) -> Vec<T> {
+        self.surface
+            .implicit_value(&self.curve.point(&x[2]))
+            .into_iter()
+            .collect()
+    }
 }
 
 /// All intersection points of `curve` and `surface` (§5.2), certified: transversal
