@@ -44,7 +44,7 @@ pub enum ClaimedPoint {
 
 /// A claimed shared arc (kind `arc`): its two ends `a` and `b`, and where the claim
 /// gives them, the exact parameters of each end on every object (`exact.params`, else
-/// `params`), which let the arc be checked exactly ([`arc`]).
+/// `params`), which let the arc be checked exactly (the private `arc` module).
 #[derive(Debug, Clone, PartialEq)]
 pub struct ClaimedArc {
     pub ends: [ClaimedPoint; 2],
