@@ -8,7 +8,7 @@
 mod curve_support;
 
 use curve_support::*;
-use geocert::curve::Curve;
+use geocert::curve::{AnyCurve3, Bezier, Curve, NurbsCurve};
 use geocert::num::{Interval, IntervalLike, MpfrInterval, Real};
 
 /// Check every containment at the points `pts` of the box `[a, b]`.
@@ -155,4 +155,88 @@ fn huge_parameters_of_periodic_curves_enclose_the_whole_curve() {
         }
     }
     assert!(c.point(&1e300).iter().all(|x| x.is_finite()));
+}
+
+/// Wide boxes of rational curves are tight (the hull of the Bézier form on the box,
+/// `curve::span_hull`): the f64 interval point enclosure of a NURBS circle (radius `r`,
+/// nine control points, a quadrant per span) and of a rational Bézier quarter circle
+/// over random boxes — up to a whole span — is finite and exceeds the sampled range of
+/// the curve by at most `r·(b − a)²` per coordinate (the hull of an arc of angle φ
+/// exceeds it by `r(1/cos(φ/2) − 1) ≤ 0.42 r` for φ ≤ π/2). The basis sums alone gave a
+/// weight enclosure holding 0 over a whole span, hence an unbounded point.
+#[test]
+fn wide_boxes_of_rational_curves_are_tight() {
+    let r = 3.0;
+    let h = std::f64::consts::FRAC_1_SQRT_2;
+    let ring = [
+        [1.0, 0.0],
+        [1.0, 1.0],
+        [0.0, 1.0],
+        [-1.0, 1.0],
+        [-1.0, 0.0],
+        [-1.0, -1.0],
+        [0.0, -1.0],
+        [1.0, -1.0],
+        [1.0, 0.0],
+    ];
+    let circle = NurbsCurve::new(
+        2,
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0],
+        ring.iter().map(|p| [r * p[0], r * p[1], 0.5]).collect(),
+        Some(vec![1.0, h, 1.0, h, 1.0, h, 1.0, h, 1.0]),
+        None,
+    )
+    .unwrap();
+    let quarter = Bezier::new(
+        vec![[r, 0.0, 0.5], [r, r, 0.5], [0.0, r, 0.5]],
+        Some(vec![1.0, h, 1.0]),
+        None,
+    )
+    .unwrap();
+    let mut rng = Rng::new(4242);
+    let mut checked = 0;
+    for (name, c, span) in [
+        ("nurbs circle", AnyCurve3::Nurbs(circle), 1.0),
+        ("bezier quarter", AnyCurve3::Bezier(quarter), 1.0),
+    ] {
+        let (lo, hi) = c.domain();
+        for i in 0..200 {
+            let w = span * 10f64.powf(-rng.range(0.0, 3.0));
+            let (a, b) = if i % 10 == 0 {
+                // a whole span
+                let k = (rng.range(lo, hi - 1e-9) / span).floor() * span;
+                (k, k + span)
+            } else {
+                let a = rng.range(lo, hi - w);
+                (a, a + w)
+            };
+            let enc = c.jet(&Interval::from_bounds(a, b), 0);
+            for (j, e) in enc[0].iter().enumerate() {
+                let (elo, ehi) = (e.lo(), e.hi());
+                assert!(
+                    elo.is_finite() && ehi.is_finite(),
+                    "{name} [{a}, {b}] coord {j}: {e:?}"
+                );
+                let samples: Vec<f64> = (0..=400)
+                    .map(|k| c.jet(&(a + (b - a) * k as f64 / 400.0), 0)[0][j])
+                    .collect();
+                let smin = samples.iter().cloned().fold(f64::INFINITY, f64::min);
+                let smax = samples.iter().cloned().fold(f64::NEG_INFINITY, f64::max);
+                // (f64 samples: within their rounding of the enclosure)
+                let slack = 1e-12 * r;
+                assert!(
+                    elo <= smin + slack && smax - slack <= ehi,
+                    "{name} [{a}, {b}] coord {j}: samples out"
+                );
+                let allowed = (smax - smin) + r * (b - a) * (b - a) + 1e-12 * r;
+                assert!(
+                    ehi - elo <= allowed,
+                    "{name} [{a}, {b}] coord {j}: width {} > {allowed}",
+                    ehi - elo
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert_eq!(checked, 2 * 200 * 3);
 }

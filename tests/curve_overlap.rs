@@ -9,52 +9,14 @@
 
 use geocert::io::{read_cases, solve_case};
 use geocert::num::rng::Rng;
+mod exact_bezier_support;
+use exact_bezier_support::*;
 use rug::Rational;
 use serde_json::{json, Value};
 
 fn run(case: &Value) -> Value {
     let read = read_cases(&case.to_string()).into_iter().next().unwrap();
     serde_json::from_str(&solve_case(read).to_json_line()).unwrap()
-}
-
-type Poly = Vec<Vec<Rational>>;
-
-fn lerp(a: &[Rational], b: &[Rational], t: &Rational) -> Vec<Rational> {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| x * (Rational::from(1) - t) + Rational::from(y * t))
-        .collect()
-}
-
-/// The control polygons of `[0, t]` and `[t, 1]` (de Casteljau, exact).
-fn split(p: &Poly, t: &Rational) -> (Poly, Poly) {
-    let (mut left, mut right) = (vec![p[0].clone()], vec![p[p.len() - 1].clone()]);
-    let mut q = p.clone();
-    while q.len() > 1 {
-        q = q.windows(2).map(|w| lerp(&w[0], &w[1], t)).collect();
-        left.push(q[0].clone());
-        right.push(q[q.len() - 1].clone());
-    }
-    right.reverse();
-    (left, right)
-}
-
-/// The piece over `[a, b]`, reparametrised to `[0, 1]`.
-fn piece(p: &Poly, a: &Rational, b: &Rational) -> Poly {
-    let (_, right) = split(p, a);
-    let t = Rational::from(b - a) / (Rational::from(1) - a);
-    split(&right, &t).0
-}
-
-fn doubles(p: &Poly) -> Vec<Vec<f64>> {
-    p.iter()
-        .map(|v| v.iter().map(|x| x.to_f64()).collect())
-        .collect()
-}
-
-fn bezier(p: &Poly) -> Value {
-    let t = if p[0].len() == 2 { "bezier2" } else { "bezier" };
-    json!({"type": t, "points": doubles(p)})
 }
 
 /// The Bézier curve `p` as a NURBS of the same degree with the knot 1/2 inserted.

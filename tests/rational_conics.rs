@@ -332,10 +332,10 @@ fn nurbs_circles_in_space_against_spheres() {
             .iter()
             .map(|[x, y]| vec![circle_param(x, y)])
             .collect();
-        if budget_spent(&res) {
-            // Known limit (tests/README.md): the interval NURBS is wide over a long
-            // span, and a span's search may spend its budget; what it reports must
-            // still be right.
+        if incomplete_at_a_knot(&res) {
+            // Known limit (tests/README.md): a root at a knot that is also on the
+            // sphere's seam, at 2^±500, is left undecided (or a span's search spends its
+            // budget); what the answer reports must still be right.
             fails.check(
                 sound_but_incomplete(&res, &point_boxes(&res), &snap_all(pts)),
                 &case,
@@ -351,7 +351,7 @@ fn nurbs_circles_in_space_against_spheres() {
     assert!(tried * 2 >= cases(45), "{tried}");
     assert!(
         spent * 3 <= tried,
-        "{spent} of {tried} spent their box budget"
+        "{spent} of {tried} incomplete at a knot"
     );
 }
 

@@ -244,3 +244,101 @@ fn boxes_narrower_than_a_double_spacing_are_enclosed() {
         }
     }
 }
+
+/// The NURBS sphere of radius `r` about the origin (tests/rational_patches.rs): the
+/// full circle in `u` (quadrants at `u = 1, 2, 3`, dyadic weights) swept along the
+/// half-circle meridian in `v` (equator at `v = 1`).
+fn nurbs_sphere(r: f64) -> geocert::surface::nurbs::NurbsSurface {
+    let circle = [
+        (1.0, 0.0),
+        (1.0, 1.0),
+        (0.0, 1.0),
+        (-1.0, 1.0),
+        (-1.0, 0.0),
+        (-1.0, -1.0),
+        (0.0, -1.0),
+        (1.0, -1.0),
+        (1.0, 0.0),
+    ];
+    let wu = [1.0, 1.0, 2.0, 2.0, 4.0, 4.0, 8.0, 8.0, 16.0];
+    let meridian = [(0.0, -1.0), (1.0, -1.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
+    let wv = [1.0, 1.0, 2.0, 2.0, 4.0];
+    let points: Vec<Vec<[f64; 3]>> = meridian
+        .iter()
+        .map(|&(x, z)| {
+            circle
+                .iter()
+                .map(|&(a, b)| [r * x * a, r * x * b, r * z])
+                .collect()
+        })
+        .collect();
+    let weights: Vec<Vec<f64>> = wv.iter().map(|b| wu.map(|a| a * b).to_vec()).collect();
+    geocert::surface::nurbs::NurbsSurface::new(
+        [2, 2],
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0],
+        vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.0],
+        &points,
+        Some(&weights),
+    )
+    .unwrap()
+}
+
+/// Wide boxes of a rational patch are tight (the hull of the Bézier net on the box,
+/// `surface::patch_hull`): on the NURBS sphere, random boxes up to a whole span pair —
+/// and across knots — are enclosed (the checks of [`check_box`], jets and derived
+/// quantities), and the point enclosure is finite and exceeds the sampled range of the
+/// patch by at most `r·(w_u² + w_v²)` per coordinate (an arc of angle φ ≤ π/2 exceeds
+/// its hull by `≤ 0.42 r`).
+#[test]
+fn wide_boxes_of_rational_patches_are_tight() {
+    let r = 5.0;
+    let s = nurbs_sphere(r);
+    let mut rng = Rng(0x5eed);
+    let mut boxes = 0;
+    for i in 0..120 {
+        let side = |rng: &mut Rng, hi: f64| {
+            let w = 10f64.powf(-3.0 * rng.unit());
+            if i % 6 == 0 {
+                let k = (rng.unit() * hi).floor().min(hi - 1.0);
+                [k, k + 1.0] // a whole span
+            } else {
+                let a = rng.range(0.0, hi - w);
+                [a, a + w]
+            }
+        };
+        let (u, v) = (side(&mut rng, 4.0), side(&mut rng, 2.0));
+        check_box("nurbs sphere", &s, u, v, &mut rng);
+        let enc = s.jet(
+            &Interval::from_bounds(u[0], u[1]),
+            &Interval::from_bounds(v[0], v[1]),
+            0,
+        );
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for a in 0..=40 {
+            for b in 0..=40 {
+                let p = s.jet(
+                    &(u[0] + (u[1] - u[0]) * a as f64 / 40.0),
+                    &(v[0] + (v[1] - v[0]) * b as f64 / 40.0),
+                    0,
+                )[0];
+                for c in 0..3 {
+                    lo[c] = lo[c].min(p[c]);
+                    hi[c] = hi[c].max(p[c]);
+                }
+            }
+        }
+        let excess = r * ((u[1] - u[0]).powi(2) + (v[1] - v[0]).powi(2)) + 1e-12 * r;
+        for c in 0..3 {
+            let e = &enc[0][c];
+            assert!(
+                e.is_bounded() && e.hi() - e.lo() <= hi[c] - lo[c] + excess,
+                "{u:?}×{v:?} coordinate {c}: {e:?} against the sampled [{}, {}]",
+                lo[c],
+                hi[c]
+            );
+        }
+        boxes += 1;
+    }
+    assert_eq!(boxes, 120);
+}

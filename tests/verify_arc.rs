@@ -15,66 +15,14 @@
 
 use geocert::io::{read_cases, verify_case};
 use geocert::num::rng::Rng;
+mod exact_bezier_support;
+use exact_bezier_support::*;
 use rug::Rational;
 use serde_json::{json, Value};
 
 fn verify(case: &Value) -> Value {
     let read = read_cases(&case.to_string()).into_iter().next().unwrap();
     serde_json::from_str(&verify_case(read).to_json_line()).unwrap()
-}
-
-type Poly = Vec<Vec<Rational>>;
-
-fn lerp(a: &[Rational], b: &[Rational], t: &Rational) -> Vec<Rational> {
-    a.iter()
-        .zip(b)
-        .map(|(x, y)| x * (Rational::from(1) - t) + Rational::from(y * t))
-        .collect()
-}
-
-/// The control polygons of `[0, t]` and `[t, 1]` (de Casteljau, exact).
-fn split(p: &Poly, t: &Rational) -> (Poly, Poly) {
-    let (mut left, mut right) = (vec![p[0].clone()], vec![p[p.len() - 1].clone()]);
-    let mut q = p.clone();
-    while q.len() > 1 {
-        q = q.windows(2).map(|w| lerp(&w[0], &w[1], t)).collect();
-        left.push(q[0].clone());
-        right.push(q[q.len() - 1].clone());
-    }
-    right.reverse();
-    (left, right)
-}
-
-/// The point at `t` (de Casteljau, exact).
-fn at(p: &Poly, t: &Rational) -> Vec<Rational> {
-    split(p, t).1[0].clone()
-}
-
-/// The piece over `[a, b]`, reparametrised to `[0, 1]`.
-fn piece(p: &Poly, a: &Rational, b: &Rational) -> Poly {
-    let (_, right) = split(p, a);
-    let t = Rational::from(b - a) / (Rational::from(1) - a);
-    split(&right, &t).0
-}
-
-/// The polygon as doubles, checked exact (the test's truth is the rational curve).
-fn doubles(p: &Poly) -> Vec<Vec<f64>> {
-    p.iter()
-        .map(|v| {
-            v.iter()
-                .map(|x| {
-                    let d = x.to_f64();
-                    assert_eq!(Rational::from_f64(d).unwrap(), *x, "not exact in doubles");
-                    d
-                })
-                .collect()
-        })
-        .collect()
-}
-
-fn bezier(p: &Poly) -> Value {
-    let t = if p[0].len() == 2 { "bezier2" } else { "bezier" };
-    json!({"type": t, "points": doubles(p)})
 }
 
 fn text(x: &Rational) -> String {

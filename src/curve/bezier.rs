@@ -9,9 +9,10 @@
 
 use super::domain::Domain;
 use super::rational::quotient_jet;
+use super::span_hull;
 use super::Curve;
 use crate::error::{require_finite_all, GeomError};
-use crate::num::Real;
+use crate::num::{Interval, Real};
 
 /// A (rational) Bézier curve `Σ B_{i,n}(t) w_i P_i / Σ B_{i,n}(t) w_i`, `t ∈ [0, 1]`
 /// (or a sub-range).
@@ -176,24 +177,44 @@ impl<const D: usize> Curve<D> for Bezier<D> {
         self.domain.pair()
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; D]> {
-        let rows: Vec<Vec<T>> = match &self.weights {
-            None => self
-                .points
-                .iter()
-                .map(|p| p.iter().map(|&x| t.lift(x)).collect())
-                .collect(),
-            Some(w) => self
-                .points
-                .iter()
-                .zip(w)
-                .map(|(p, &w)| {
-                    let wt = t.lift(w);
-                    let mut row: Vec<T> = p.iter().map(|&x| t.lift(x) * &wt).collect();
-                    row.push(wt);
-                    row
-                })
-                .collect(),
-        };
-        finish_jet(de_casteljau_jet(rows, t, order), self.weights.is_some())
+        let rows = homogeneous_rows(&self.points, self.weights.as_deref(), t);
+        let rational = self.weights.is_some();
+        let n = self.points.len() - 1;
+        let jet = finish_jet(de_casteljau_jet(rows, t, order), rational);
+        // Over a wide f64 interval de Casteljau's levels are loose: narrow them by the
+        // hull of the Bézier form on the interval (`span_hull`), the curve being span `n`
+        // of the knots `0^{n+1} 1^{n+1}`.
+        span_hull::meet(jet, t, |ab| {
+            let mut knots = vec![0.0; n + 1];
+            knots.resize(2 * n + 2, 1.0);
+            let rows =
+                homogeneous_rows(&self.points, self.weights.as_deref(), &Interval::point(0.0));
+            span_hull::hull_jet(&knots, n, n, &rows, rational, ab, order)
+        })
+    }
+}
+
+/// The control points as rows `(w P, w)` (rational) or `P`, in the number system of
+/// `like` (shared with NURBS curves).
+pub(crate) fn homogeneous_rows<T: Real, const D: usize>(
+    points: &[[f64; D]],
+    weights: Option<&[f64]>,
+    like: &T,
+) -> Vec<Vec<T>> {
+    match weights {
+        None => points
+            .iter()
+            .map(|p| p.iter().map(|&x| like.lift(x)).collect())
+            .collect(),
+        Some(w) => points
+            .iter()
+            .zip(w)
+            .map(|(p, &w)| {
+                let wt = like.lift(w);
+                let mut row: Vec<T> = p.iter().map(|&x| like.lift(x) * &wt).collect();
+                row.push(wt);
+                row
+            })
+            .collect(),
     }
 }

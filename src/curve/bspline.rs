@@ -214,24 +214,42 @@ impl KnotVector {
     /// de Boor's recursion [Y 2.9.5]–[Y 2.9.6] for the point of span `s`: `rows[j]` are
     /// the (homogeneous) control points `j = s−p … s`, each with any number of
     /// components; the result is the point's components.
-    pub fn de_boor<T: Real>(&self, s: usize, t: &T, mut rows: Vec<Vec<T>>) -> Vec<T> {
-        let p = self.degree;
-        let u = |i: usize| t.lift(self.knots[i]);
-        for r in 1..=p {
-            for j in (s - p + r..=s).rev() {
-                let i = j - (s - p);
-                let alpha = (t.clone() - u(j)) / (u(j + p + 1 - r) - u(j));
-                let beta = t.one_like() - &alpha;
-                let new: Vec<T> = rows[i]
-                    .iter()
-                    .zip(&rows[i - 1])
-                    .map(|(a, b)| alpha.clone() * a + beta.clone() * b)
-                    .collect();
-                rows[i] = new;
-            }
-        }
-        rows.swap_remove(p)
+    pub fn de_boor<T: Real>(&self, s: usize, t: &T, rows: Vec<Vec<T>>) -> Vec<T> {
+        let xs = vec![t.clone(); self.degree];
+        blossom(&self.knots, self.degree, s, &xs, rows)
     }
+}
+
+/// The blossom (polar form) `f(x₁, …, x_p)` of the degree-`p` polynomial piece on span
+/// `s` of `knots`, with `rows[j]` the (homogeneous) control points `j = s−p … s`: de
+/// Boor's recursion [Y 2.9.5]–[Y 2.9.6] with the parameter `x_r` at level `r`. All `x_r`
+/// equal to `t` give the point at `t`; `f(a^{p−k}, b^k)`, `k = 0..=p`, are the Bézier
+/// control points of the piece on `[a, b]` (Ramshaw's blossoming principle). A Bézier
+/// curve of degree `p` is the span `s = p` of the knots `0^{p+1} 1^{p+1}` (then the
+/// recursion is de Casteljau's).
+pub(crate) fn blossom<T: Real>(
+    knots: &[f64],
+    p: usize,
+    s: usize,
+    xs: &[T],
+    mut rows: Vec<Vec<T>>,
+) -> Vec<T> {
+    for r in 1..=p {
+        let x = &xs[r - 1];
+        let u = |i: usize| x.lift(knots[i]);
+        for j in (s - p + r..=s).rev() {
+            let i = j - (s - p);
+            let alpha = (x.clone() - u(j)) / (u(j + p + 1 - r) - u(j));
+            let beta = x.one_like() - &alpha;
+            let new: Vec<T> = rows[i]
+                .iter()
+                .zip(&rows[i - 1])
+                .map(|(a, b)| alpha.clone() * a + beta.clone() * b)
+                .collect();
+            rows[i] = new;
+        }
+    }
+    rows.swap_remove(p)
 }
 
 /// The basis function `N_{i,m}(t)` of order `m` by the literal recursion (1.11),

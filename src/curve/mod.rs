@@ -31,6 +31,7 @@ pub mod lines;
 pub mod nurbs;
 pub mod polyline;
 mod rational;
+pub(crate) mod span_hull;
 pub mod weight;
 
 pub use analytic::{circular_arc, elliptic_arc, Analytic, Analytic2, Shape};

@@ -10,13 +10,14 @@
 //! intervals repeating across the seam — what [`NurbsCurve::periodic`] builds, the
 //! (impl) closed curve of §1.5) wraps its parameter ([`periodic_jet`]).
 
-use super::bezier::{check_net, finish_jet};
+use super::bezier::{check_net, finish_jet, homogeneous_rows};
 use super::bspline::KnotVector;
 use super::domain::{periodic_jet, piecewise_jet, Domain};
 use super::rational::quotient_jet;
+use super::span_hull;
 use super::{Curve, StepHint};
 use crate::error::GeomError;
-use crate::num::Real;
+use crate::num::{Interval, Real};
 use rug::Rational;
 
 /// A NURBS (or B-spline) curve of degree `p` with `n` control points and `n + p + 1`
@@ -122,22 +123,14 @@ impl<const D: usize> NurbsCurve<D> {
     /// Homogeneous rows `(w P, w)` (or `P`) of the control points `s−p … s`.
     fn rows<T: Real>(&self, s: usize, like: &T) -> Vec<Vec<T>> {
         let p = self.degree();
-        (s - p..=s)
-            .map(|j| match &self.weights {
-                None => self.points[j].iter().map(|&x| like.lift(x)).collect(),
-                Some(w) => {
-                    let wt = like.lift(w[j]);
-                    let mut row: Vec<T> =
-                        self.points[j].iter().map(|&x| like.lift(x) * &wt).collect();
-                    row.push(wt);
-                    row
-                }
-            })
-            .collect()
+        let w = self.weights.as_deref().map(|w| &w[s - p..=s]);
+        homogeneous_rows(&self.points[s - p..=s], w, like)
     }
 
     /// The jet on span `s` from the basis derivatives (1.11)–(1.12): the homogeneous
-    /// sums `A⁽ᵏ⁾ = Σ N⁽ᵏ⁾ w P`, `W⁽ᵏ⁾ = Σ N⁽ᵏ⁾ w`, then the quotient rule.
+    /// sums `A⁽ᵏ⁾ = Σ N⁽ᵏ⁾ w P`, `W⁽ᵏ⁾ = Σ N⁽ᵏ⁾ w`, then the quotient rule; for an f64
+    /// interval parameter, intersected with the hull of the span's Bézier form
+    /// ([`span_hull`]).
     fn span_jet<T: Real>(&self, s: usize, t: &T, order: usize) -> Vec<[T; D]> {
         let p = self.degree();
         let basis = self.knots.basis_derivatives_flat(s, t, order);
@@ -161,11 +154,25 @@ impl<const D: usize> NurbsCurve<D> {
                 }
             }
         }
-        if self.weights.is_some() {
+        let jet = if self.weights.is_some() {
             quotient_jet(&numerator, &weight)
         } else {
             numerator
-        }
+        };
+        // Over a wide f64 interval the basis sums are loose: narrow them by the hull of
+        // the span's Bézier form (`span_hull`).
+        span_hull::meet(jet, t, |ab| {
+            let rows = self.rows(s, &Interval::point(0.0));
+            span_hull::hull_jet(
+                self.knots.knots(),
+                p,
+                s,
+                &rows,
+                self.weights.is_some(),
+                ab,
+                order,
+            )
+        })
     }
 
     /// The point by de Boor's recursion [Y 2.9.5]–[Y 2.9.6] (an alternative to the

@@ -10,9 +10,22 @@ use crate::num::Real;
 
 /// `numerator[k] = A⁽ᵏ⁾`, `weight[k] = W⁽ᵏ⁾` (same length) → `c⁽ᵏ⁾` for every `k`.
 pub fn quotient_jet<T: Real, const D: usize>(numerator: &[[T; D]], weight: &[T]) -> Vec<[T; D]> {
+    let point = numerator[0].clone().map(|a| a / &weight[0]);
+    quotient_jet_from(point, numerator, weight)
+}
+
+/// [`quotient_jet`] with the point `c` given: any enclosure of `A/W` (a tighter one than
+/// the quotient of the enclosures, e.g. the hull of the projected control points of
+/// `curve::span_hull`) is used in every later step.
+pub fn quotient_jet_from<T: Real, const D: usize>(
+    point: [T; D],
+    numerator: &[[T; D]],
+    weight: &[T],
+) -> Vec<[T; D]> {
     let w0 = &weight[0];
     let mut out: Vec<[T; D]> = Vec::with_capacity(numerator.len());
-    for k in 0..numerator.len() {
+    out.push(point);
+    for k in 1..numerator.len() {
         let mut binom = 1.0f64;
         let mut acc = numerator[k].clone();
         for j in 1..=k {

@@ -17,6 +17,7 @@ pub mod frame;
 pub mod implicit;
 pub mod motion;
 pub mod nurbs;
+mod patch_hull;
 pub mod pencil;
 pub mod plane;
 pub mod quadrics;

@@ -10,6 +10,7 @@
 //! f64 does.
 
 use super::basis::{bspline_jet, spans_touching, BasisJet};
+use super::patch_hull::{meet_point, point_hull, SpanPair};
 use super::sets::hull;
 use super::taylor::{centre, is_point, taylor_tensor_jet};
 use super::taylor_fast::{try_centred_jet, BasisSource};
@@ -98,9 +99,11 @@ impl NurbsSurface {
         };
         let [p, q] = self.degrees;
         let mut result: Option<Vec<[T; 3]>> = None;
-        for sv in self.spans(1, v) {
+        let (us, vs): (Vec<usize>, Vec<usize>) =
+            (self.spans(0, u).collect(), self.spans(1, v).collect());
+        for &sv in &vs {
             let mut jv = None;
-            for su in self.spans(0, u) {
+            for &su in &us {
                 let fast = if centred {
                     try_centred_jet(
                         &self.net,
@@ -114,6 +117,8 @@ impl NurbsSurface {
                     None
                 };
                 if let Some(jet) = fast {
+                    // (fast: centred only)
+                    let jet = self.narrow(jet, [u, v], [su, sv], [&us, &vs]);
                     result = Some(join(result, jet));
                     continue;
                 }
@@ -135,10 +140,51 @@ impl NurbsSurface {
                 } else {
                     tensor_jet(&self.net, &ju, su - p, jv, sv - q, order)
                 };
+                let jet = if centred {
+                    self.narrow(jet, [u, v], [su, sv], [&us, &vs])
+                } else {
+                    jet // direct_jet: the plain sums, as documented
+                };
                 result = Some(join(result, jet));
             }
         }
         result.expect("at least one span")
+    }
+
+    /// The point of the jet of span pair `spans` narrowed by the hull of its Bézier net
+    /// over the box ([`super::patch_hull`]), the box cut at the span's knots on the
+    /// sides where a neighbouring span of `touched` takes over (the first and last span
+    /// touched are continued over all of the box, as the basis evaluation is, so that
+    /// parameters beyond the domain stay enclosed).
+    fn narrow<T: Real>(
+        &self,
+        jet: Vec<[T; 3]>,
+        [u, v]: [&T; 2],
+        spans: [usize; 2],
+        touched: [&[usize]; 2],
+    ) -> Vec<[T; 3]> {
+        let clip = |d: usize, [a, b]: [f64; 2]| {
+            let (s, k) = (spans[d], &self.knots[d]);
+            let lo = if touched[d].first() == Some(&s) {
+                a
+            } else {
+                a.max(k[s])
+            };
+            let hi = if touched[d].last() == Some(&s) {
+                b
+            } else {
+                b.min(k[s + 1])
+            };
+            [lo, hi]
+        };
+        meet_point(jet, u, v, |bu, bv| {
+            let pair = SpanPair {
+                knots: [&self.knots[0], &self.knots[1]],
+                degrees: self.degrees,
+                spans,
+            };
+            point_hull(&self.net, &pair, clip(0, bu), clip(1, bv))
+        })
     }
 
     /// The basis of span `s` in `direction`, for the fast centred form.

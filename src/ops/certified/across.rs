@@ -415,3 +415,137 @@ pub fn shifted_to_meet(a: &[Interval], b: &[Interval], whole: &Unknowns) -> Opti
         })
         .collect()
 }
+
+#[cfg(test)]
+mod tests {
+    //! [`decide_boxes`] on its own: one-dimensional tiles `[0, 1]`, `[1, 2]` whose
+    //! systems agree at the knot `x = 1` (continuous, with a kink: the slope jumps).
+    use super::*;
+
+    /// `f(x) = slope·(x − 1)² ·square + slope·(x − 1) + shift` on one tile.
+    struct Piece {
+        slope: f64,
+        square: f64,
+        shift: f64,
+    }
+
+    impl System for Piece {
+        fn dim(&self) -> usize {
+            1
+        }
+        fn eval<T: Real>(&self, x: &[T]) -> Vec<T> {
+            let d = x[0].clone() - &x[0].lift(1.0);
+            let s = x[0].lift(self.slope);
+            let quad = d.sqr() * &x[0].lift(self.square);
+            vec![(quad + &d) * &s + &x[0].lift(self.shift)]
+        }
+    }
+
+    fn unknowns(lo: f64, hi: f64) -> Unknowns {
+        Unknowns {
+            domain: vec![[lo, hi]],
+            periodic: vec![false],
+            rounded: vec![false],
+        }
+    }
+
+    fn tiles(square: f64, shift: f64) -> Vec<(Piece, Unknowns)> {
+        vec![
+            (
+                Piece {
+                    slope: 1.0,
+                    square,
+                    shift,
+                },
+                unknowns(0.0, 1.0),
+            ),
+            (
+                Piece {
+                    slope: 2.0,
+                    square,
+                    shift,
+                },
+                unknowns(1.0, 2.0),
+            ),
+        ]
+    }
+
+    fn undecided(lo: f64, hi: f64) -> UndecidedBox {
+        UndecidedBox {
+            enclosure: vec![Interval::from_bounds(lo, hi)],
+            reason: "test".into(),
+        }
+    }
+
+    /// A box touching the knot from either side, or straddling it, over the simple
+    /// root at the knot: decided, one verified root holding `x = 1`, nothing left;
+    /// the same box twice gives the root once.
+    #[test]
+    fn a_box_at_the_knot_is_proven_across_it() {
+        for (lo, hi) in [(0.9, 1.0), (1.0, 1.05), (0.999, 1.001), (0.5, 1.0)] {
+            let mut roots = Vec::new();
+            let left = decide_boxes(
+                &tiles(0.0, 0.0),
+                &unknowns(0.0, 2.0),
+                &mut roots,
+                vec![undecided(lo, hi), undecided(lo, hi)],
+            );
+            assert!(left.is_empty(), "[{lo}, {hi}]: {left:?}");
+            assert_eq!(roots.len(), 1, "[{lo}, {hi}]");
+            assert_eq!(roots[0].status, Status::Verified);
+            assert!(roots[0].enclosure[0].contains(1.0));
+        }
+    }
+
+    /// Nothing wrong is decided: every root added holds exactly one true root, and a box
+    /// taken off the undecided list has each of its true roots in an added root. Cases:
+    /// a box away from every knot (stays, adds nothing); a box at the knot with no root
+    /// (the root 0.75 lies outside: it stays, or the proof reaches 0.75 and proves it
+    /// unique in a region holding the box); two roots `0.98995…` and `1.00702…` on
+    /// either side of the knot (no unique root to prove across it).
+    #[test]
+    fn what_is_decided_is_right() {
+        let two = |slope: f64| {
+            // 10⁴d² + d − 1/slope = 0, the root on the tile's side of the knot
+            let disc = (1.0 + 4e4 / slope).sqrt();
+            if slope == 1.0 {
+                1.0 + (-1.0 - disc) / 2e4
+            } else {
+                1.0 + (-1.0 + disc) / 2e4
+            }
+        };
+        for (square, shift, lo, hi, truths, stays) in [
+            (0.0, 0.0, 0.3, 0.4, vec![1.0], true),
+            (0.0, 0.25, 0.9, 1.0, vec![0.75], false),
+            (1e4, -1.0, 0.985, 1.0, vec![two(1.0), two(2.0)], true),
+        ] {
+            let mut roots = Vec::new();
+            let left = decide_boxes(
+                &tiles(square, shift),
+                &unknowns(0.0, 2.0),
+                &mut roots,
+                vec![undecided(lo, hi)],
+            );
+            let holds = |e: &Interval, t: f64| e.lo() - 1e-12 <= t && t <= e.hi() + 1e-12;
+            for r in &roots {
+                let k = truths
+                    .iter()
+                    .filter(|&&t| holds(&r.enclosure[0], t))
+                    .count();
+                assert_eq!(k, 1, "[{lo}, {hi}]: {r:?}");
+            }
+            if left.is_empty() {
+                for &t in truths.iter().filter(|&&t| lo <= t && t <= hi) {
+                    assert!(
+                        roots.iter().any(|r| holds(&r.enclosure[0], t)),
+                        "[{lo}, {hi}]: {t}"
+                    );
+                }
+            }
+            if stays {
+                assert_eq!(left.len(), 1, "[{lo}, {hi}]");
+                assert!(roots.is_empty(), "[{lo}, {hi}]: {roots:?}");
+            }
+        }
+    }
+}
