@@ -98,7 +98,11 @@ impl<C> Extended<C> {
             };
             return self.base.jet(&t, order);
         }
-        let e = t.lift(if i == 0 { self.breaks[1] } else { self.breaks[2] });
+        let e = t.lift(if i == 0 {
+            self.breaks[1]
+        } else {
+            self.breaks[2]
+        });
         let end = self.base.jet(&e, 1);
         let dt = t.clone() - &e;
         (0..=order)

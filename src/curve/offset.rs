@@ -159,7 +159,10 @@ macro_rules! from_base {
         }
         fn pinned_at(&self, t: f64) -> Option<Self> {
             let base = self.base.pinned_at(t)?;
-            Some(Self { base, ..self.clone() })
+            Some(Self {
+                base,
+                ..self.clone()
+            })
         }
         fn step_hint(&self, t: f64) -> StepHint {
             self.base.step_hint(t)

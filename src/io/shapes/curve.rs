@@ -392,9 +392,7 @@ pub fn parse_curve2(mut value: Value, field: &str) -> Result<Curve2Spec, GeomErr
         "composite_curve2" => {
             Curve2Spec::Composite(derived::composite(value, field, &parse_curve2)?)
         }
-        "extended_curve2" => {
-            Curve2Spec::Extended(derived::extended(value, field, &parse_curve2)?)
-        }
+        "extended_curve2" => Curve2Spec::Extended(derived::extended(value, field, &parse_curve2)?),
         other => {
             return Err(unknown_type(
                 field,

@@ -90,7 +90,11 @@ fn base<S>(v: Option<Value>, field: &str, read: Reader<S>) -> Result<Box<S>, Geo
 }
 
 /// `offset_curve`'s fields (its `type` removed).
-pub(super) fn offset3<S>(v: Value, field: &str, read: Reader<S>) -> Result<Offset3Spec<S>, GeomError> {
+pub(super) fn offset3<S>(
+    v: Value,
+    field: &str,
+    read: Reader<S>,
+) -> Result<Offset3Spec<S>, GeomError> {
     let f: Offset3Fields = parse_fields(v, field)?;
     let offset = need(f.offset, field, "offset")?;
     Ok(Offset3Spec {
@@ -100,7 +104,11 @@ pub(super) fn offset3<S>(v: Value, field: &str, read: Reader<S>) -> Result<Offse
 }
 
 /// `offset_curve2`'s fields.
-pub(super) fn offset2<S>(v: Value, field: &str, read: Reader<S>) -> Result<Offset2Spec<S>, GeomError> {
+pub(super) fn offset2<S>(
+    v: Value,
+    field: &str,
+    read: Reader<S>,
+) -> Result<Offset2Spec<S>, GeomError> {
     let f: Offset2Fields = parse_fields(v, field)?;
     let distance = need(f.distance, field, "distance")?;
     Ok(Offset2Spec {
@@ -110,7 +118,11 @@ pub(super) fn offset2<S>(v: Value, field: &str, read: Reader<S>) -> Result<Offse
 }
 
 /// `composite_curve(2)`'s fields: at least one piece (`invalid_value`, `pieces`).
-pub(super) fn composite<S>(v: Value, field: &str, read: Reader<S>) -> Result<CompositeSpec<S>, GeomError> {
+pub(super) fn composite<S>(
+    v: Value,
+    field: &str,
+    read: Reader<S>,
+) -> Result<CompositeSpec<S>, GeomError> {
     let f: CompositeFields = parse_fields(v, field)?;
     let pieces = need(f.pieces, field, "pieces")?;
     if pieces.is_empty() {
@@ -128,7 +140,11 @@ pub(super) fn composite<S>(v: Value, field: &str, read: Reader<S>) -> Result<Com
 }
 
 /// `extended_curve(2)`'s fields.
-pub(super) fn extended<S>(v: Value, field: &str, read: Reader<S>) -> Result<ExtendedSpec<S>, GeomError> {
+pub(super) fn extended<S>(
+    v: Value,
+    field: &str,
+    read: Reader<S>,
+) -> Result<ExtendedSpec<S>, GeomError> {
     let f: ExtendedFields = parse_fields(v, field)?;
     let extend = need(f.extend, field, "extend")?;
     Ok(ExtendedSpec {
