@@ -4,9 +4,12 @@
 
 use super::analytic::{Analytic, Analytic2};
 use super::bezier::Bezier;
+use super::composite::Composite;
 use super::derived::Reparametrised;
+use super::extended::Extended;
 use super::lines::{Line, Segment};
 use super::nurbs::NurbsCurve;
+use super::offset::{Offset2, Offset3};
 use super::polyline::Polyline;
 use super::{Curve, StepHint};
 use crate::num::Real;
@@ -23,6 +26,12 @@ pub enum AnyCurve3 {
     Polyline(Polyline<3>),
     /// Trimmed, reversed or reparametrised curve.
     Reparametrised(Box<Reparametrised<AnyCurve3>>),
+    /// `c + t̂ × d` (§1.5).
+    Offset(Box<Offset3<AnyCurve3>>),
+    /// Pieces joined end to end (§1.5).
+    Composite(Box<Composite<AnyCurve3>>),
+    /// Continued along the end tangents (§1.5).
+    Extended(Box<Extended<AnyCurve3>>),
 }
 
 /// Any plane curve (parametric; the implicit `conic2` is [`super::Conic2`]).
@@ -36,6 +45,10 @@ pub enum AnyCurve2 {
     Nurbs(NurbsCurve<2>),
     Polyline(Polyline<2>),
     Reparametrised(Box<Reparametrised<AnyCurve2>>),
+    /// `c + a·n` (§1.2).
+    Offset(Box<Offset2<AnyCurve2>>),
+    Composite(Box<Composite<AnyCurve2>>),
+    Extended(Box<Extended<AnyCurve2>>),
 }
 
 /// Forward one call to the primitive held by the enum.
@@ -49,6 +62,9 @@ macro_rules! forward {
             $enum::Nurbs($c) => $call,
             $enum::Polyline($c) => $call,
             $enum::Reparametrised($c) => $call,
+            $enum::Offset($c) => $call,
+            $enum::Composite($c) => $call,
+            $enum::Extended($c) => $call,
         }
     };
 }
@@ -57,12 +73,18 @@ impl Curve<3> for AnyCurve3 {
     fn piece_breaks(&self) -> Vec<f64> {
         match self {
             AnyCurve3::Nurbs(c) => c.piece_breaks(),
+            AnyCurve3::Offset(c) => c.piece_breaks(),
+            AnyCurve3::Composite(c) => c.piece_breaks(),
+            AnyCurve3::Extended(c) => c.piece_breaks(),
             _ => Vec::new(),
         }
     }
     fn pinned_at(&self, t: f64) -> Option<Self> {
         match self {
             AnyCurve3::Nurbs(c) => c.pinned_at(t).map(AnyCurve3::Nurbs),
+            AnyCurve3::Offset(c) => c.pinned_at(t).map(|p| AnyCurve3::Offset(Box::new(p))),
+            AnyCurve3::Composite(c) => c.pinned_at(t).map(|p| AnyCurve3::Composite(Box::new(p))),
+            AnyCurve3::Extended(c) => c.pinned_at(t).map(|p| AnyCurve3::Extended(Box::new(p))),
             _ => None,
         }
     }
@@ -93,12 +115,18 @@ impl Curve<2> for AnyCurve2 {
     fn piece_breaks(&self) -> Vec<f64> {
         match self {
             AnyCurve2::Nurbs(c) => c.piece_breaks(),
+            AnyCurve2::Offset(c) => c.piece_breaks(),
+            AnyCurve2::Composite(c) => c.piece_breaks(),
+            AnyCurve2::Extended(c) => c.piece_breaks(),
             _ => Vec::new(),
         }
     }
     fn pinned_at(&self, t: f64) -> Option<Self> {
         match self {
             AnyCurve2::Nurbs(c) => c.pinned_at(t).map(AnyCurve2::Nurbs),
+            AnyCurve2::Offset(c) => c.pinned_at(t).map(|p| AnyCurve2::Offset(Box::new(p))),
+            AnyCurve2::Composite(c) => c.pinned_at(t).map(|p| AnyCurve2::Composite(Box::new(p))),
+            AnyCurve2::Extended(c) => c.pinned_at(t).map(|p| AnyCurve2::Extended(Box::new(p))),
             _ => None,
         }
     }

@@ -28,17 +28,17 @@ pub struct Reparametrised<C> {
 }
 
 /// The exact rational value of a double (finite by the callers' checks).
-fn q(x: f64) -> Rational {
+pub(super) fn q(x: f64) -> Rational {
     Rational::from_f64(x).unwrap_or_default()
 }
 
 /// The greatest double `≤ x`.
-fn round_down(x: &Rational) -> f64 {
+pub(super) fn round_down(x: &Rational) -> f64 {
     Float::with_val_round(53, x, Round::Down).0.to_f64()
 }
 
 /// The least double `≥ x`.
-fn round_up(x: &Rational) -> f64 {
+pub(super) fn round_up(x: &Rational) -> f64 {
     Float::with_val_round(53, x, Round::Up).0.to_f64()
 }
 

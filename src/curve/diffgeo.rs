@@ -109,3 +109,52 @@ pub trait PlaneCurve: Curve<2> {
 }
 
 impl<C: Curve<2>> PlaneCurve for C {}
+
+/// The derivatives of the unit tangent `t̂ = v/|v|` (1.2) from those of `v = c'`:
+/// `v_jet[j] = v⁽ʲ⁾` (`j = 0..=k`) gives `t̂⁽ʲ⁾` for the same `j`. Written as Taylor
+/// (Leibniz) arithmetic: `s = v·v`, `w = s^(−1/2)` with `2s w' + s' w = 0` differentiated
+/// `m` times for `w⁽ᵐ⁺¹⁾`, and `t̂⁽ᵐ⁾ = Σ C(m,i) v⁽ⁱ⁾ w⁽ᵐ⁻ⁱ⁾`.
+///
+/// Every step is an enclosing [`Real`] operation, so for interval jets the result
+/// encloses the exact derivatives wherever `v ≠ 0`; where the enclosure of `|v|²` holds
+/// 0 (a cusp or stationary point) the divisions make the result unbounded (or, for
+/// f64, NaN/∞) — never a wrong finite value.
+pub fn unit_tangent_jet<T: Real, const D: usize>(v_jet: &[[T; D]]) -> Vec<[T; D]> {
+    let k = v_jet.len();
+    if k == 0 {
+        return Vec::new();
+    }
+    let like = &v_jet[0][0];
+    let binom = |m: usize, i: usize| -> T {
+        let c = (0..i).fold(1.0, |c, j| c * (m - j) as f64 / (j + 1) as f64);
+        like.lift(c)
+    };
+    let s: Vec<T> = (0..k)
+        .map(|m| {
+            (1..=m).fold(dot(&v_jet[0], &v_jet[m]), |acc, i| {
+                acc + binom(m, i) * dot(&v_jet[i], &v_jet[m - i])
+            })
+        })
+        .collect();
+    let s0 = norm_sq(&v_jet[0]);
+    let mut w = vec![like.one_like() / s0.sqrt()];
+    let two_s0 = like.lift(2.0) * &s0;
+    for m in 0..k - 1 {
+        let mut acc = s[1].clone() * &w[m] * binom(m, 0);
+        for i in 1..=m {
+            acc = acc
+                + like.lift(2.0) * binom(m, i) * &s[i] * &w[m + 1 - i]
+                + binom(m, i) * &s[i + 1] * &w[m - i];
+        }
+        w.push(-acc / &two_s0);
+    }
+    (0..k)
+        .map(|m| {
+            std::array::from_fn(|d| {
+                (0..=m).fold(like.zero_like(), |acc, i| {
+                    acc + binom(m, i) * &v_jet[i][d] * &w[m - i]
+                })
+            })
+        })
+        .collect()
+}

@@ -13,7 +13,8 @@
 //! * [`polyline`], [`bezier`] (rational Bézier, conic arc), [`nurbs`] (B-spline and
 //!   NURBS curves over the basis of [`bspline`]);
 //! * [`conic2`] — the implicit conic of the plane;
-//! * [`derived`] — trimmed, reversed and reparametrised curves;
+//! * [`derived`] — trimmed, reversed and reparametrised curves; [`offset`], [`composite`]
+//!   and [`extended`] — the other derived curves of §1.2 and §1.5;
 //! * [`any`] — [`AnyCurve3`] / [`AnyCurve2`], one enum over every curve;
 //! * [`diffgeo`] — the frame quantities of (1.2)–(1.4) from a jet.
 
@@ -21,14 +22,17 @@ pub mod analytic;
 pub mod any;
 pub mod bezier;
 pub mod bspline;
+pub mod composite;
 pub mod conic2;
 pub mod derived;
 pub mod diffgeo;
 pub mod domain;
+pub mod extended;
 pub mod frame;
 pub mod implicit;
 pub mod lines;
 pub mod nurbs;
+pub mod offset;
 pub mod polyline;
 mod rational;
 pub(crate) mod span_hull;
@@ -37,13 +41,16 @@ pub mod weight;
 pub use analytic::{circular_arc, elliptic_arc, Analytic, Analytic2, Shape};
 pub use any::{AnyCurve2, AnyCurve3};
 pub use bezier::{conic_arc, Bezier};
+pub use composite::Composite;
 pub use conic2::{Conic2, ConicKind};
 pub use derived::Reparametrised;
 pub use diffgeo::{PlaneCurve, SpaceCurve};
 pub use domain::Domain;
+pub use extended::Extended;
 pub use frame::Frame;
 pub use lines::{Line, Segment};
 pub use nurbs::NurbsCurve;
+pub use offset::{Offset2, Offset3};
 pub use polyline::Polyline;
 
 use crate::num::Real;

@@ -105,6 +105,9 @@ const CURVE3_TYPES: &[&str] = &[
     "bezier",
     "nurbs_curve",
     "polyline",
+    "offset_curve",
+    "composite_curve",
+    "extended_curve",
 ];
 
 /// The object types this build understands, as written in `type`.
@@ -116,7 +119,9 @@ pub const OBJECT_TYPES: &[&str] = &[
     "segment2",
     "polyhedron",
     "circle, ellipse, hyperbola, parabola, helix, bezier, nurbs_curve, polyline",
+    "offset_curve, composite_curve, extended_curve",
     "circle2, ellipse2, bezier2, nurbs_curve2, polyline2, conic2",
+    "offset_curve2, composite_curve2, extended_curve2",
     "sphere, ellipsoid, hyperboloid1, hyperboloid2, paraboloid, cylinder, cone, torus",
     "bezier_surface, nurbs_surface",
     "revolution, extrusion, ruled",

@@ -30,6 +30,10 @@ mod curve_overlap;
 mod curved_forms;
 #[path = "../curved_forms_3d.rs"]
 mod curved_forms_3d;
+#[path = "../derived_curves.rs"]
+mod derived_curves;
+#[path = "../derived_curves_json.rs"]
+mod derived_curves_json;
 #[path = "../intersect_curve_line2.rs"]
 mod intersect_curve_line2;
 #[path = "../intersect_curve_plane.rs"]

@@ -1,7 +1,9 @@
 //! Curve objects of docs/FORMAT.md: `line`, `segment`, `circle`, `ellipse`, `hyperbola`,
 //! `parabola`, `helix`, `bezier`, `nurbs_curve` and the 2D `line2`, `segment2`,
 //! `circle2`, `ellipse2`, `bezier2`, `nurbs_curve2`, `conic2`; and, as an extension,
-//! `polyline` / `polyline2` (`points`, optional `params`, OPERATIONS.md §1.5).
+//! `polyline` / `polyline2` (`points`, optional `params`, OPERATIONS.md §1.5) and the
+//! derived curves of [`super::derived`] (`offset_curve`, `composite_curve`,
+//! `extended_curve` and their 2D forms).
 //!
 //! Every curve may carry `domain` (docs/FORMAT.md "Domains");
 //! `range` and `domain` are the same field where docs/FORMAT.md writes `range`. A circle or
@@ -13,11 +15,17 @@ pub use super::curve_fields::{
     SegmentSpec,
 };
 
+pub use super::derived::{CompositeSpec, ExtendedSpec, Offset2Spec, Offset3Spec};
+
 use super::curve_fields::{pair, P2, P3};
+use super::derived::{self, build_parts};
 use super::{parse_fields, take_type, to_json_with_type};
-use crate::curve::{AnyCurve2, AnyCurve3, Bezier, Conic2, Line, NurbsCurve, Polyline, Segment};
+use crate::curve::{
+    AnyCurve2, AnyCurve3, Bezier, Composite, Conic2, Extended, Line, NurbsCurve, Offset2, Offset3,
+    Polyline, Segment,
+};
 use crate::error::GeomError;
-use serde_json::Value;
+use serde_json::{json, Value};
 
 /// A space curve as written.
 #[derive(Debug, Clone, PartialEq)]
@@ -32,6 +40,9 @@ pub enum Curve3Spec {
     Bezier(BezierSpec<P3>),
     Nurbs(NurbsCurveSpec<P3>),
     Polyline(PolylineSpec<P3>),
+    Offset(Offset3Spec<Curve3Spec>),
+    Composite(CompositeSpec<Curve3Spec>),
+    Extended(ExtendedSpec<Curve3Spec>),
 }
 
 /// A plane curve as written (parametric, or the implicit `conic2`).
@@ -45,6 +56,9 @@ pub enum Curve2Spec {
     Nurbs(NurbsCurveSpec<P2>),
     Polyline(PolylineSpec<P2>),
     Conic(Conic2Spec),
+    Offset(Offset2Spec<Curve2Spec>),
+    Composite(CompositeSpec<Curve2Spec>),
+    Extended(ExtendedSpec<Curve2Spec>),
 }
 
 /// A built plane curve: parametric or implicit.
@@ -66,6 +80,9 @@ pub const CURVE3_TYPES: &[&str] = &[
     "bezier",
     "nurbs_curve",
     "polyline",
+    "offset_curve",
+    "composite_curve",
+    "extended_curve",
 ];
 
 /// The plane curve types, as written in `type`.
@@ -78,6 +95,9 @@ pub const CURVE2_TYPES: &[&str] = &[
     "nurbs_curve2",
     "polyline2",
     "conic2",
+    "offset_curve2",
+    "composite_curve2",
+    "extended_curve2",
 ];
 
 impl Curve3Spec {
@@ -94,6 +114,9 @@ impl Curve3Spec {
             Curve3Spec::Bezier(_) => "bezier",
             Curve3Spec::Nurbs(_) => "nurbs_curve",
             Curve3Spec::Polyline(_) => "polyline",
+            Curve3Spec::Offset(_) => "offset_curve",
+            Curve3Spec::Composite(_) => "composite_curve",
+            Curve3Spec::Extended(_) => "extended_curve",
         }
     }
 
@@ -123,6 +146,19 @@ impl Curve3Spec {
             Curve3Spec::Polyline(s) => {
                 AnyCurve3::Polyline(Polyline::new(s.points.clone(), s.params.clone())?)
             }
+            Curve3Spec::Offset(s) => {
+                let base = s.base.build().map_err(|e| e.at("base"))?;
+                AnyCurve3::Offset(Box::new(Offset3::new(base, s.offset)?))
+            }
+            Curve3Spec::Composite(s) => {
+                let pieces = build_parts(&s.named(), Curve3Spec::build)?;
+                AnyCurve3::Composite(Box::new(Composite::new(pieces)?))
+            }
+            Curve3Spec::Extended(s) => {
+                let base = s.base.build().map_err(|e| e.at("base"))?;
+                let [before, after] = s.extend;
+                AnyCurve3::Extended(Box::new(Extended::new(base, before, after)?))
+            }
         })
     }
 
@@ -143,6 +179,13 @@ impl Curve3Spec {
             Curve3Spec::Bezier(s) => to_json_with_type(name, s),
             Curve3Spec::Nurbs(s) => to_json_with_type(name, s),
             Curve3Spec::Polyline(s) => to_json_with_type(name, s),
+            Curve3Spec::Offset(s) => {
+                json!({"type": name, "base": s.base.to_json(), "offset": s.offset})
+            }
+            Curve3Spec::Composite(s) => s.to_json(name, Curve3Spec::to_json),
+            Curve3Spec::Extended(s) => {
+                json!({"type": name, "base": s.base.to_json(), "extend": s.extend})
+            }
         }
     }
 }
@@ -169,6 +212,9 @@ impl Curve2Spec {
             Curve2Spec::Nurbs(_) => "nurbs_curve2",
             Curve2Spec::Polyline(_) => "polyline2",
             Curve2Spec::Conic(_) => "conic2",
+            Curve2Spec::Offset(_) => "offset_curve2",
+            Curve2Spec::Composite(_) => "composite_curve2",
+            Curve2Spec::Extended(_) => "extended_curve2",
         }
     }
 
@@ -195,8 +241,33 @@ impl Curve2Spec {
                 AnyCurve2::Polyline(Polyline::new(s.points.clone(), s.params.clone())?)
             }
             Curve2Spec::Conic(s) => return Ok(PlaneShape::Conic(Conic2::new(s.coeffs)?)),
+            Curve2Spec::Offset(s) => {
+                let base = s.base.parametric().map_err(|e| e.at("base"))?;
+                AnyCurve2::Offset(Box::new(Offset2::new(base, s.distance)?))
+            }
+            Curve2Spec::Composite(s) => {
+                let pieces = build_parts(&s.named(), Curve2Spec::parametric)?;
+                AnyCurve2::Composite(Box::new(Composite::new(pieces)?))
+            }
+            Curve2Spec::Extended(s) => {
+                let base = s.base.parametric().map_err(|e| e.at("base"))?;
+                let [before, after] = s.extend;
+                AnyCurve2::Extended(Box::new(Extended::new(base, before, after)?))
+            }
         };
         Ok(PlaneShape::Curve(curve))
+    }
+
+    /// Build a parametric curve (the part of a derived curve). Errors as
+    /// [`Curve2Spec::build`]; `unsupported` (`type`) for the implicit `conic2`.
+    pub fn parametric(&self) -> Result<AnyCurve2, GeomError> {
+        match self.build()? {
+            PlaneShape::Curve(c) => Ok(c),
+            PlaneShape::Conic(_) => Err(GeomError::Unsupported {
+                field: "type".into(),
+                reason: "conic2 is implicit; a derived curve needs a parametric curve".into(),
+            }),
+        }
     }
 
     /// The spec as a JSON object with its `type`.
@@ -210,6 +281,13 @@ impl Curve2Spec {
             Curve2Spec::Nurbs(s) => to_json_with_type(name, s),
             Curve2Spec::Polyline(s) => to_json_with_type(name, s),
             Curve2Spec::Conic(s) => to_json_with_type(name, s),
+            Curve2Spec::Offset(s) => {
+                json!({"type": name, "base": s.base.to_json(), "distance": s.distance})
+            }
+            Curve2Spec::Composite(s) => s.to_json(name, Curve2Spec::to_json),
+            Curve2Spec::Extended(s) => {
+                json!({"type": name, "base": s.base.to_json(), "extend": s.extend})
+            }
         }
     }
 }
@@ -278,6 +356,11 @@ pub fn parse_curve3(mut value: Value, field: &str) -> Result<Curve3Spec, GeomErr
         "bezier" => Curve3Spec::Bezier(parse_fields(value, field)?),
         "nurbs_curve" => Curve3Spec::Nurbs(parse_fields(value, field)?),
         "polyline" => Curve3Spec::Polyline(parse_fields(value, field)?),
+        "offset_curve" => Curve3Spec::Offset(derived::offset3(value, field, &parse_curve3)?),
+        "composite_curve" => {
+            Curve3Spec::Composite(derived::composite(value, field, &parse_curve3)?)
+        }
+        "extended_curve" => Curve3Spec::Extended(derived::extended(value, field, &parse_curve3)?),
         other => {
             return Err(unknown_type(
                 field,
@@ -305,6 +388,11 @@ pub fn parse_curve2(mut value: Value, field: &str) -> Result<Curve2Spec, GeomErr
         "nurbs_curve2" => Curve2Spec::Nurbs(parse_fields(value, field)?),
         "polyline2" => Curve2Spec::Polyline(parse_fields(value, field)?),
         "conic2" => Curve2Spec::Conic(parse_fields(value, field)?),
+        "offset_curve2" => Curve2Spec::Offset(derived::offset2(value, field, &parse_curve2)?),
+        "composite_curve2" => {
+            Curve2Spec::Composite(derived::composite(value, field, &parse_curve2)?)
+        }
+        "extended_curve2" => Curve2Spec::Extended(derived::extended(value, field, &parse_curve2)?),
         other => {
             return Err(unknown_type(
                 field,

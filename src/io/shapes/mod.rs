@@ -6,11 +6,13 @@
 //! Curved objects take doubles only: a number written as a string (`"p/q"`) is
 //! refused with an `unsupported` error naming the field.
 //!
-//! * [`curve`] — every curve type: [`parse_curve3`], [`parse_curve2`];
+//! * [`curve`] — every curve type: [`parse_curve3`], [`parse_curve2`]; the derived
+//!   curves (offset, composite, extended) in [`derived`];
 //! * [`surface`] — every surface type: [`surface::parse_surface`].
 
 pub mod curve;
 mod curve_fields;
+pub mod derived;
 pub mod motion;
 pub mod surface;
 
