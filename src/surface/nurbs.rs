@@ -319,8 +319,14 @@ mod tests {
                 Interval::from_bounds(0.3, 0.3 + 1e-4),
                 Interval::from_bounds(0.6, 0.6 + 1e-4),
             );
-            let fast = try_centred_jet(&s.net, s.source(0, 3), &u, s.source(1, 3), &v, 2);
-            assert_eq!(Some(s.jet(&u, &v, 2)), fast, "scale {scale:e}");
+            let fast = try_centred_jet(&s.net, s.source(0, 3), &u, s.source(1, 3), &v, 2).unwrap();
+            let jet = s.jet(&u, &v, 2);
+            // The derivatives are the fast path's; the point is it narrowed by the hull
+            // of the Bézier net on the box (patch_hull).
+            assert_eq!(jet[1..], fast[1..], "scale {scale:e}");
+            for c in 0..3 {
+                assert!(jet[0][c].is_subset(&fast[0][c]), "scale {scale:e}");
+            }
         }
     }
 }
