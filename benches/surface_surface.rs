@@ -1,7 +1,7 @@
 //! Surface ∩ surface (issue 15; BENCHMARKS.md has the table and the command): the float
 //! trace against the certified answer, in one run, on a suite of pairs.
 //!
-//! Each group measures `float` ([`intersect_surface_surface_f64`]: §9.2 start points,
+//! Each group measures `float` ([`intersect_surface_surface_f64_of`]: §9.2 start points,
 //! §9.3 marching in both directions), `certified_chains` (the float answer, then every
 //! curve covered by a proven box chain with proven vertex bounds and the singular points
 //! certified; `complete` not proven) and `certified_complete` (the library's certified
@@ -17,7 +17,7 @@
 
 use criterion::{black_box, criterion_group, criterion_main, Criterion};
 use geocert::ops::surface_surface::{
-    intersect_surface_surface, intersect_surface_surface_f64, Options, SurfaceOperand,
+    intersect_surface_surface_f64_of, intersect_surface_surface_of, Options, SurfaceOperand,
 };
 use geocert::ops::{intersect as front_intersect, Answer, Options as FrontOptions, Shape};
 use geocert::surface::bezier::BezierSurface;
@@ -52,7 +52,7 @@ fn group<A: SurfaceOperand, B: SurfaceOperand>(c: &mut Criterion, name: &str, a:
     // What is timed: the certified answer is complete and proven — verified, or
     // verified_singular where the pair has singular points (Steinmetz) — else the pair
     // is reported and skipped: timing an undecided answer says nothing.
-    let full = intersect_surface_surface(a, b, &o).expect("valid input");
+    let full = intersect_surface_surface_of(a, b, &o).expect("valid input");
     if !(full.complete && full.status != Status::Undecided) {
         eprintln!("{name}: not proven ({:?}); skipped", full.reason);
         return;
@@ -65,13 +65,13 @@ fn group<A: SurfaceOperand, B: SurfaceOperand>(c: &mut Criterion, name: &str, a:
     );
     let mut g = c.benchmark_group(format!("surface_surface/{name}"));
     g.bench_function("float", |bch| {
-        bch.iter(|| intersect_surface_surface_f64(black_box(a), b, &o))
+        bch.iter(|| intersect_surface_surface_f64_of(black_box(a), b, &o))
     });
     g.bench_function("certified_chains", |bch| {
-        bch.iter(|| intersect_surface_surface(black_box(a), b, &chains))
+        bch.iter(|| intersect_surface_surface_of(black_box(a), b, &chains))
     });
     g.bench_function("certified_complete", |bch| {
-        bch.iter(|| intersect_surface_surface(black_box(a), b, &o))
+        bch.iter(|| intersect_surface_surface_of(black_box(a), b, &o))
     });
     g.finish();
 }
@@ -106,7 +106,7 @@ fn group_exact(c: &mut Criterion, name: &str, a: &Sphere, b: &Sphere) {
     eprintln!("{name}: {:?}, the exact circle", answer.status);
     let mut g = c.benchmark_group(format!("surface_surface/{name}"));
     g.bench_function("float", |bch| {
-        bch.iter(|| intersect_surface_surface_f64(black_box(a), b, &o))
+        bch.iter(|| intersect_surface_surface_f64_of(black_box(a), b, &o))
     });
     g.bench_function("certified_exact", |bch| {
         bch.iter(|| front_intersect(black_box(&shapes), &opts))
@@ -174,8 +174,8 @@ fn steps_table() {
         let count = |r: geocert::ops::surface_surface::SurfaceIntersectionF64| {
             r.curves.iter().map(|c| c.points.len()).sum::<usize>()
         };
-        let a = count(intersect_surface_surface_f64(&cyl, &plane, &o).expect("f"));
-        let b = count(intersect_surface_surface_f64(&sphere, &par, &o).expect("f"));
+        let a = count(intersect_surface_surface_f64_of(&cyl, &plane, &o).expect("f"));
+        let b = count(intersect_surface_surface_f64_of(&sphere, &par, &o).expect("f"));
         eprintln!("{tol:e} | {a} | {b}");
     }
 }

@@ -6,10 +6,12 @@
 //! and vertices it straddles — including boxes across the seam of periodic curves.
 
 mod curve_support;
+mod truth_support;
 
 use curve_support::*;
 use geocert::curve::{AnyCurve3, Bezier, Curve, NurbsCurve};
 use geocert::num::{Interval, IntervalLike, MpfrInterval, Real};
+use truth_support::conics::{KNOTS, OFFSETS, WEIGHTS};
 
 /// Check every containment at the points `pts` of the box `[a, b]`.
 fn check_box<const D: usize>(name: &str, c: &impl Curve<D>, a: f64, b: f64, pts: &[f64]) {
@@ -168,22 +170,11 @@ fn huge_parameters_of_periodic_curves_enclose_the_whole_curve() {
 fn wide_boxes_of_rational_curves_are_tight() {
     let r = 3.0;
     let h = std::f64::consts::FRAC_1_SQRT_2;
-    let ring = [
-        [1.0, 0.0],
-        [1.0, 1.0],
-        [0.0, 1.0],
-        [-1.0, 1.0],
-        [-1.0, 0.0],
-        [-1.0, -1.0],
-        [0.0, -1.0],
-        [1.0, -1.0],
-        [1.0, 0.0],
-    ];
     let circle = NurbsCurve::new(
         2,
-        vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0],
-        ring.iter().map(|p| [r * p[0], r * p[1], 0.5]).collect(),
-        Some(vec![1.0, h, 1.0, h, 1.0, h, 1.0, h, 1.0]),
+        KNOTS.to_vec(),
+        OFFSETS.iter().map(|&(x, y)| [r * x, r * y, 0.5]).collect(),
+        Some(WEIGHTS.to_vec()),
         None,
     )
     .unwrap();

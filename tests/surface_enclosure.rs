@@ -6,10 +6,12 @@
 //! jet lies inside the f64-interval one. The same for the unit normal and the curvatures.
 
 mod surface_support;
+mod truth_support;
 
 use geocert::num::{Interval, IntervalLike, MpfrInterval, Real};
 use geocert::surface::Surface;
 use surface_support::{nurbs_bicubic, zoo, Rng, Visit};
+use truth_support::conics::{KNOTS, OFFSETS, WEIGHTS};
 
 const PREC: u32 = 200;
 
@@ -249,33 +251,21 @@ fn boxes_narrower_than_a_double_spacing_are_enclosed() {
 /// full circle in `u` (quadrants at `u = 1, 2, 3`, dyadic weights) swept along the
 /// half-circle meridian in `v` (equator at `v = 1`).
 fn nurbs_sphere(r: f64) -> geocert::surface::nurbs::NurbsSurface {
-    let circle = [
-        (1.0, 0.0),
-        (1.0, 1.0),
-        (0.0, 1.0),
-        (-1.0, 1.0),
-        (-1.0, 0.0),
-        (-1.0, -1.0),
-        (0.0, -1.0),
-        (1.0, -1.0),
-        (1.0, 0.0),
-    ];
-    let wu = [1.0, 1.0, 2.0, 2.0, 4.0, 4.0, 8.0, 8.0, 16.0];
     let meridian = [(0.0, -1.0), (1.0, -1.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)];
     let wv = [1.0, 1.0, 2.0, 2.0, 4.0];
     let points: Vec<Vec<[f64; 3]>> = meridian
         .iter()
         .map(|&(x, z)| {
-            circle
+            OFFSETS
                 .iter()
                 .map(|&(a, b)| [r * x * a, r * x * b, r * z])
                 .collect()
         })
         .collect();
-    let weights: Vec<Vec<f64>> = wv.iter().map(|b| wu.map(|a| a * b).to_vec()).collect();
+    let weights: Vec<Vec<f64>> = wv.iter().map(|b| WEIGHTS.map(|a| a * b).to_vec()).collect();
     geocert::surface::nurbs::NurbsSurface::new(
         [2, 2],
-        vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 3.0, 3.0, 4.0, 4.0, 4.0],
+        KNOTS.to_vec(),
         vec![0.0, 0.0, 0.0, 1.0, 1.0, 2.0, 2.0, 2.0],
         &points,
         Some(&weights),

@@ -102,8 +102,9 @@ impl Surface for AnySurface {
 }
 
 /// Each primitive as an [`AnySurface`]: one type for all, so that generic operations are
-/// instantiated once (`intersect_surface_surface(&a.into(), &b.into(), …)` compiles the
-/// whole certifier once, not once per pair of surface types).
+/// instantiated once, not once per pair of surface types (and the non-generic entry
+/// points, e.g. `intersect_surface_surface(&a.into(), &b.into(), …)`, are compiled in this
+/// library, not again in the caller's crate).
 macro_rules! into_any_surface {
     ($($t:ident => $v:ident),*) => {$(
         impl From<$t> for AnySurface {

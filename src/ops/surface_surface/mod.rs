@@ -50,6 +50,7 @@ pub use types::{
 
 use crate::certificate::Certified;
 use crate::error::GeomError;
+use crate::surface::AnySurface;
 use operand::Pair;
 
 /// Every intersection curve and singular point of `a` and `b` (§9), float only: no proof,
@@ -57,7 +58,22 @@ use operand::Pair;
 ///
 /// Errors: a surface with an unbounded parameter domain (`objects[0].domain`, `objects[1].domain`), invalid
 /// options (`options.*`).
-pub fn intersect_surface_surface_f64<A: SurfaceOperand, B: SurfaceOperand>(
+///
+/// Not generic, so it is compiled once, in this library: a caller's crate does not
+/// compile the tracer and certifier again for [`AnySurface`] (surfaces of another type,
+/// or your own [`SurfaceOperand`]: [`intersect_surface_surface_f64_of`]).
+#[inline(never)]
+pub fn intersect_surface_surface_f64(
+    a: &AnySurface,
+    b: &AnySurface,
+    options: &Options,
+) -> Result<SurfaceIntersectionF64, GeomError> {
+    intersect_surface_surface_f64_of(a, b, options)
+}
+
+/// [`intersect_surface_surface_f64`] for any [`SurfaceOperand`]s (compiled in the caller's crate for their
+/// types).
+pub fn intersect_surface_surface_f64_of<A: SurfaceOperand, B: SurfaceOperand>(
     a: &A,
     b: &B,
     options: &Options,
@@ -72,7 +88,23 @@ pub fn intersect_surface_surface_f64<A: SurfaceOperand, B: SurfaceOperand>(
 ///
 /// Errors: `start` not finite, or no intersection point found near it (field `start`);
 /// those of [`intersect_surface_surface_f64`].
-pub fn trace_surface_surface_f64<A: SurfaceOperand, B: SurfaceOperand>(
+///
+/// Not generic, so it is compiled once, in this library: a caller's crate does not
+/// compile the tracer and certifier again for [`AnySurface`] (surfaces of another type,
+/// or your own [`SurfaceOperand`]: [`trace_surface_surface_f64_of`]).
+#[inline(never)]
+pub fn trace_surface_surface_f64(
+    a: &AnySurface,
+    b: &AnySurface,
+    start: [f64; 4],
+    options: &Options,
+) -> Result<(IntersectionCurve, Vec<SingularPoint>), GeomError> {
+    trace_surface_surface_f64_of(a, b, start, options)
+}
+
+/// [`trace_surface_surface_f64`] for any [`SurfaceOperand`]s (compiled in the caller's crate for their
+/// types).
+pub fn trace_surface_surface_f64_of<A: SurfaceOperand, B: SurfaceOperand>(
     a: &A,
     b: &B,
     start: [f64; 4],
@@ -89,7 +121,24 @@ pub fn trace_surface_surface_f64<A: SurfaceOperand, B: SurfaceOperand>(
 /// length, `0 ≤ t ≤ t_max`), on both surfaces, float.
 ///
 /// Errors: `t` outside the curve's range or not finite (field `t`); no convergence.
-pub fn intersection_point_at<A: SurfaceOperand, B: SurfaceOperand>(
+///
+/// Not generic, so it is compiled once, in this library: a caller's crate does not
+/// compile the tracer and certifier again for [`AnySurface`] (surfaces of another type,
+/// or your own [`SurfaceOperand`]: [`intersection_point_at_of`]).
+#[inline(never)]
+pub fn intersection_point_at(
+    a: &AnySurface,
+    b: &AnySurface,
+    curve: &IntersectionCurve,
+    t: f64,
+    options: &Options,
+) -> Result<CurvePoint, GeomError> {
+    intersection_point_at_of(a, b, curve, t, options)
+}
+
+/// [`intersection_point_at`] for any [`SurfaceOperand`]s (compiled in the caller's crate for their
+/// types).
+pub fn intersection_point_at_of<A: SurfaceOperand, B: SurfaceOperand>(
     a: &A,
     b: &B,
     curve: &IntersectionCurve,
@@ -106,7 +155,22 @@ pub fn intersection_point_at<A: SurfaceOperand, B: SurfaceOperand>(
 /// answer and the reason.
 ///
 /// Errors: as [`intersect_surface_surface_f64`].
-pub fn intersect_surface_surface<A: SurfaceOperand, B: SurfaceOperand>(
+///
+/// Not generic, so it is compiled once, in this library: a caller's crate does not
+/// compile the tracer and certifier again for [`AnySurface`] (surfaces of another type,
+/// or your own [`SurfaceOperand`]: [`intersect_surface_surface_of`]).
+#[inline(never)]
+pub fn intersect_surface_surface(
+    a: &AnySurface,
+    b: &AnySurface,
+    options: &Options,
+) -> Result<Certified<SurfaceIntersection>, GeomError> {
+    intersect_surface_surface_of(a, b, options)
+}
+
+/// [`intersect_surface_surface`] for any [`SurfaceOperand`]s (compiled in the caller's crate for their
+/// types).
+pub fn intersect_surface_surface_of<A: SurfaceOperand, B: SurfaceOperand>(
     a: &A,
     b: &B,
     options: &Options,
@@ -119,7 +183,23 @@ pub fn intersect_surface_surface<A: SurfaceOperand, B: SurfaceOperand>(
 /// (`complete` is false: nothing is said about other branches).
 ///
 /// Errors: as [`trace_surface_surface_f64`].
-pub fn trace_surface_surface<A: SurfaceOperand, B: SurfaceOperand>(
+///
+/// Not generic, so it is compiled once, in this library: a caller's crate does not
+/// compile the tracer and certifier again for [`AnySurface`] (surfaces of another type,
+/// or your own [`SurfaceOperand`]: [`trace_surface_surface_of`]).
+#[inline(never)]
+pub fn trace_surface_surface(
+    a: &AnySurface,
+    b: &AnySurface,
+    start: [f64; 4],
+    options: &Options,
+) -> Result<Certified<SurfaceIntersection>, GeomError> {
+    trace_surface_surface_of(a, b, start, options)
+}
+
+/// [`trace_surface_surface`] for any [`SurfaceOperand`]s (compiled in the caller's crate for their
+/// types).
+pub fn trace_surface_surface_of<A: SurfaceOperand, B: SurfaceOperand>(
     a: &A,
     b: &B,
     start: [f64; 4],

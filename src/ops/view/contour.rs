@@ -13,6 +13,7 @@ use crate::error::GeomError;
 use crate::num::round::{next_down, next_up};
 use crate::num::Interval;
 use crate::ops::surface_surface::SurfaceOperand;
+use crate::surface::AnySurface;
 
 pub use super::types::{Contour, ContourBound, ContourCurve, ContourEnd, ContourVertex};
 
@@ -36,9 +37,24 @@ impl Default for ContourOptions {
 
 /// The certified contour of `surface` in `view` (§13.5, module doc).
 ///
+/// Not generic, so it is compiled once, in this library: a caller's crate does not
+/// compile the certifier again for [`AnySurface`] (a surface of another type, or your
+/// own [`SurfaceOperand`]: [`contour_surface_of`]).
+///
 /// Errors: a grid below 4 or above 4096 cells (field `options.grid`), invalid certify
 /// options, a non-finite domain (field `domain`).
-pub fn contour_surface<S: SurfaceOperand>(
+#[inline(never)]
+pub fn contour_surface(
+    surface: &AnySurface,
+    view: &View,
+    options: &ContourOptions,
+) -> Result<Certified<Contour>, GeomError> {
+    contour_surface_of(surface, view, options)
+}
+
+/// [`contour_surface`] for any [`SurfaceOperand`] (compiled in the caller's crate for
+/// its type).
+pub fn contour_surface_of<S: SurfaceOperand>(
     surface: &S,
     view: &View,
     options: &ContourOptions,

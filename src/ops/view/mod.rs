@@ -31,10 +31,13 @@ mod types;
 mod visibility;
 
 pub use contour::{
-    contour_surface, Contour, ContourBound, ContourCurve, ContourEnd, ContourOptions, ContourVertex,
+    contour_surface, contour_surface_of, Contour, ContourBound, ContourCurve, ContourEnd,
+    ContourOptions, ContourVertex,
 };
 pub use front::{contour, curves_answer, visibility, visibility_answer};
 pub use projection::{picture_axes, Rays, View};
 pub(crate) use ray::covers;
 pub use system::ContourFn;
-pub use visibility::{visibility_point_surface, Visibility, VisibilityAnswer};
+pub use visibility::{
+    visibility_point_surface, visibility_point_surface_of, Visibility, VisibilityAnswer,
+};

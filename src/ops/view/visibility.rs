@@ -29,7 +29,7 @@ use crate::error::GeomError;
 use crate::num::Interval;
 use crate::ops::surface_surface::SurfaceOperand;
 use crate::surface::whole_box::surface_box;
-use crate::surface::Surface;
+use crate::surface::{AnySurface, Surface};
 
 pub use crate::ops::answer::Visibility;
 
@@ -50,8 +50,24 @@ pub struct VisibilityAnswer {
 /// Visibility of the point `s(params)` of `surface` in `view`, occluded by the surface
 /// itself and by `others` (module doc).
 ///
+/// Not generic, so it is compiled once, in this library (surfaces of another type:
+/// [`visibility_point_surface_of`]).
+///
 /// Errors: `params` not finite or outside the domain (field `params`); invalid options.
-pub fn visibility_point_surface<S: SurfaceOperand>(
+#[inline(never)]
+pub fn visibility_point_surface(
+    surface: &AnySurface,
+    params: [f64; 2],
+    view: &View,
+    others: &[&AnySurface],
+    opts: &Options,
+) -> Result<Certified<VisibilityAnswer>, GeomError> {
+    visibility_point_surface_of(surface, params, view, others, opts)
+}
+
+/// [`visibility_point_surface`] for any [`SurfaceOperand`] (compiled in the caller's
+/// crate for its type).
+pub fn visibility_point_surface_of<S: SurfaceOperand>(
     surface: &S,
     params: [f64; 2],
     view: &View,
