@@ -76,6 +76,22 @@ fn space_objects() -> Vec<(&'static str, Value)> {
             json!({"type": "polyline", "points": [[-1.5, 0, 0], [0, 1, 0.2], [1.5, 0, -0.1]]}),
         ),
         (
+            "offset_curve",
+            json!({"type": "offset_curve", "base": {"type": "circle", "center": [0, 0, 0], "radius": 1, "axis": z},
+            "offset": [0, 0, 0.2]}),
+        ),
+        (
+            "composite_curve",
+            json!({"type": "composite_curve", "pieces": [
+                {"type": "segment", "a": [-1.5, -0.5, 0.1], "b": [-0.5, 0.5, 0.1]},
+                {"type": "bezier", "points": [[-0.5, 0.5, 0.1], [0.5, 1.5, -0.2], [1.5, -0.5, 0.3]]}]}),
+        ),
+        (
+            "extended_curve",
+            json!({"type": "extended_curve", "base": {"type": "bezier", "points": [[-1, -1, 0.2], [0, 1.5, -0.3], [1, -1, 0.4]]},
+            "extend": [0.4, 0.4]}),
+        ),
+        (
             "sphere",
             json!({"type": "sphere", "center": [0, 0, 0], "radius": 1}),
         ),
@@ -191,6 +207,21 @@ fn plane_objects() -> Vec<(&'static str, Value)> {
         (
             "polyline2",
             json!({"type": "polyline2", "points": [[-1.5, 0], [0, 1], [1.5, -0.2]]}),
+        ),
+        (
+            "offset_curve2",
+            json!({"type": "offset_curve2", "base": {"type": "circle2", "center": [0, 0], "radius": 1.2}, "distance": 0.2}),
+        ),
+        (
+            "composite_curve2",
+            json!({"type": "composite_curve2", "pieces": [
+                {"type": "segment2", "a": [-1.5, -0.5], "b": [-0.5, 0.5]},
+                {"type": "bezier2", "points": [[-0.5, 0.5], [0.5, 1.5], [1.5, -0.5]]}]}),
+        ),
+        (
+            "extended_curve2",
+            json!({"type": "extended_curve2", "base": {"type": "bezier2", "points": [[-1, -1], [0, 1.5], [1, -1]]},
+            "extend": [0.4, 0.4]}),
         ),
         (
             "conic2",
