@@ -148,3 +148,222 @@ fn cylinder_sphere(c: &Cylinder, p: &Sphere, k: usize) -> Vec<DecidedFace> {
     }
     out
 }
+
+#[cfg(test)]
+mod tests {
+    //! Families against an independent truth: the face circle `v = h` holds a point at
+    //! distance `R` from the sphere's centre iff `R² ∈ [(ρ − d)² + dz², (ρ + d)² + dz²]`
+    //! (nearest and farthest points of the circle), computed in MPFR at 600 bits from
+    //! the unit axis — not from the exact `A² ⋛ B²` of the module. Touching cases are
+    //! built exactly from Pythagorean triples; there the side of the face the curve
+    //! leaves into is derived geometrically: at the nearest point the distance grows
+    //! with `|w_z − v|`, so the curve runs toward `w_z`; at the farthest point away.
+    use super::*;
+    use crate::num::rng::Rng;
+    use rug::Float;
+
+    const BITS: u32 = 600;
+
+    /// Integer axes with an integer length, and two integer vectors orthogonal to each
+    /// with the same length (so `perp/len` is a rational unit vector).
+    const AXES: [([f64; 3], f64, [[f64; 3]; 2]); 5] = [
+        ([0.0, 0.0, 1.0], 1.0, [[1.0, 0.0, 0.0], [0.0, 1.0, 0.0]]),
+        ([1.0, 0.0, 0.0], 1.0, [[0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]),
+        ([1.0, 2.0, 2.0], 3.0, [[2.0, 1.0, -2.0], [2.0, -2.0, 1.0]]),
+        ([2.0, 3.0, 6.0], 7.0, [[3.0, -6.0, 2.0], [6.0, 2.0, -3.0]]),
+        ([0.0, 3.0, 4.0], 5.0, [[5.0, 0.0, 0.0], [0.0, 4.0, -3.0]]),
+    ];
+    const TRIPLES: [[f64; 3]; 5] = [
+        [3.0, 4.0, 5.0],
+        [5.0, 12.0, 13.0],
+        [8.0, 15.0, 17.0],
+        [7.0, 24.0, 25.0],
+        [20.0, 21.0, 29.0],
+    ];
+
+    fn f(x: f64) -> Float {
+        Float::with_val(BITS, x)
+    }
+
+    /// `[lo, hi]`: the squared distances of the nearest and farthest points of the face
+    /// circle `v = h` from the sphere's centre, and `w_z`.
+    fn face_range(c: &Cylinder, p: &Sphere, h: f64) -> (Float, Float, Float) {
+        let (axis, o, centre) = (c.frame().axis(), c.frame().origin(), p.frame().origin());
+        let len = (0..3)
+            .fold(f(0.0), |s, i| s + f(axis[i]) * f(axis[i]))
+            .sqrt();
+        let w: Vec<Float> = (0..3).map(|i| f(centre[i]) - f(o[i])).collect();
+        let wz = (0..3).fold(f(0.0), |s, i| s + w[i].clone() * f(axis[i])) / &len;
+        let ww = (0..3).fold(f(0.0), |s, i| s + w[i].clone() * &w[i]);
+        let d2 = ww - wz.clone() * &wz;
+        let d = if d2 > 0 { d2.sqrt() } else { f(0.0) };
+        let rho = f(c.semi_axes()[0]);
+        let dz = wz.clone() - h;
+        let dz2 = dz.clone() * &dz;
+        let near = (rho.clone() - &d).square() + &dz2;
+        let far = (rho + &d).square() + &dz2;
+        (near, far, wz)
+    }
+
+    fn truth_of(decided: &[DecidedFace], k: usize, h: f64) -> Option<FaceTruth> {
+        decided
+            .iter()
+            .find(|x| x.k == k && x.bound == h)
+            .map(|x| x.truth)
+    }
+
+    /// A face is `Empty` only if `R²` is outside its range, and `TouchInside` only at
+    /// an end of it (random data: never, up to 600-bit rounding).
+    fn check_generic(c: &Cylinder, p: &Sphere, got: &[DecidedFace], k: usize) -> usize {
+        let mut empties = 0;
+        let r2 = f(p.radius()).square();
+        for h in c.domain().1 {
+            let (lo, hi, _) = face_range(c, p, h);
+            match truth_of(got, k, h) {
+                Some(FaceTruth::Empty) => {
+                    assert!(r2 < lo || r2 > hi, "{c:?} {p:?}: face {h} called empty");
+                    empties += 1;
+                }
+                Some(FaceTruth::TouchInside) => {
+                    let tiny = f(1e-150) * (f(1.0) + &hi);
+                    let gap = (r2.clone() - &lo).abs().min(&(r2.clone() - &hi).abs());
+                    assert!(gap < tiny, "{c:?} {p:?}: face {h} called touching");
+                }
+                None => {}
+            }
+        }
+        empties
+    }
+
+    #[test]
+    fn random_faces_are_empty_only_when_the_sphere_misses_them() {
+        let mut rng = Rng::new(1515);
+        let (mut empties, mut cases) = (0, 0);
+        for i in 0..3000 {
+            let (axis, _, _) = AXES[rng.below(AXES.len())];
+            let scale = [1.0, 0.125, 2f64.powi(200), 2f64.powi(-200)][i % 4];
+            let int = |rng: &mut Rng, lo: i64, hi: i64| rng.int(lo, hi) as f64 * scale;
+            let o = [
+                int(&mut rng, -8, 8),
+                int(&mut rng, -8, 8),
+                int(&mut rng, -8, 8),
+            ];
+            let centre = [
+                int(&mut rng, -8, 8),
+                int(&mut rng, -8, 8),
+                int(&mut rng, -8, 8),
+            ];
+            let rho = int(&mut rng, 1, 8);
+            let big = int(&mut rng, 1, 16);
+            let h0 = int(&mut rng, -12, 12);
+            let h1 = h0 + int(&mut rng, 1, 12);
+            let sign = if rng.coin() { 1.0 } else { -1.0 };
+            let axis = axis.map(|x| x * sign * scale);
+            let c = Cylinder::new(o, [rho, rho], axis, None, [h0, h1]).unwrap();
+            let p = Sphere::new(centre, big, None, None).unwrap();
+            let (ca, pa) = (
+                AnySurface::Cylinder(c.clone()),
+                AnySurface::Sphere(p.clone()),
+            );
+            empties += check_generic(&c, &p, &decide(Some(&ca), Some(&pa)), 1);
+            empties += check_generic(&c, &p, &decide(Some(&pa), Some(&ca)), 3);
+            assert!(decide(Some(&pa), Some(&pa)).is_empty());
+            cases += 1;
+        }
+        // Anti-vacuity: most faces of such random pairs miss the sphere.
+        assert!(empties > cases, "{empties} empty faces in {cases} cases");
+    }
+
+    #[test]
+    fn touching_faces_are_decided_on_the_side_the_curve_leaves_into() {
+        let mut rng = Rng::new(1516);
+        let (mut inside, mut outside) = (0, 0);
+        for i in 0..2000 {
+            let (axis, len, perps) = AXES[rng.below(AXES.len())];
+            let scale = [1.0, 0.25, 2f64.powi(180), 2f64.powi(-180)][i % 4];
+            let [t0, t1, t2] = TRIPLES[rng.below(TRIPLES.len())];
+            let (m, dz, big) = if rng.coin() {
+                (t0, t1, t2)
+            } else {
+                (t1, t0, t2)
+            };
+            let k = rng.int(1, 3) as f64;
+            let (m, dz, big) = (m * k, dz * k, big * k);
+            let near = rng.coin();
+            // `d` a multiple of the perpendicular's length; ρ from `|ρ − d| = m`
+            // (nearest point) or `ρ + d = m` (farthest).
+            let d = len * rng.int(1, 4) as f64;
+            let rho = if near {
+                if rng.coin() || d <= m {
+                    d + m
+                } else {
+                    d - m
+                }
+            } else if m > d {
+                m - d
+            } else {
+                continue;
+            };
+            let wz = len * rng.int(-6, 6) as f64;
+            let s = if rng.coin() { 1.0 } else { -1.0 };
+            let h = wz - s * dz;
+            let end = rng.below(2);
+            let other = h + if end == 0 { 1.0 } else { -1.0 } * rng.int(1, 9) as f64;
+            let heights = if end == 0 { [h, other] } else { [other, h] };
+            let perp = perps[rng.below(2)];
+            let o = [
+                rng.int(-5, 5) as f64,
+                rng.int(-5, 5) as f64,
+                rng.int(-5, 5) as f64,
+            ];
+            // c = O + w_z·axis/len + d·perp/len, exact (len divides w_z and d).
+            let centre: [f64; 3] =
+                std::array::from_fn(|j| o[j] + wz / len * axis[j] + d / len * perp[j]);
+            let sc = |x: [f64; 3]| x.map(|v| v * scale);
+            let c = Cylinder::new(
+                sc(o),
+                [rho * scale; 2],
+                sc(axis),
+                None,
+                heights.map(|x| x * scale),
+            )
+            .unwrap();
+            let p = Sphere::new(sc(centre), big * scale, None, None).unwrap();
+            let hs = h * scale;
+            // The construction touches: R² is the nearest (or farthest) end of the range.
+            let (lo, hi, _) = face_range(&c, &p, hs);
+            let r2 = f(big * scale).square();
+            let gap = if near { r2 - &lo } else { r2 - &hi };
+            assert!(gap.abs() <= f(1e-170) * &hi, "not touching by construction");
+            // The curve leaves into sign(w_z − h) = s at the nearest point, −s at the
+            // farthest; the domain lies above the lower end, below the upper one.
+            let leaves = if near { s } else { -s };
+            let into = if end == 0 { 1.0 } else { -1.0 };
+            let expected = (leaves == into).then_some(FaceTruth::TouchInside);
+            let (ca, pa) = (
+                AnySurface::Cylinder(c.clone()),
+                AnySurface::Sphere(p.clone()),
+            );
+            for (got, k) in [
+                (decide(Some(&ca), Some(&pa)), 1),
+                (decide(Some(&pa), Some(&ca)), 3),
+            ] {
+                assert_eq!(
+                    truth_of(&got, k, hs),
+                    expected,
+                    "{c:?} {p:?} near {near} face {hs}"
+                );
+                check_generic(&c, &p, &got, k);
+            }
+            if expected.is_some() {
+                inside += 1;
+            } else {
+                outside += 1;
+            }
+        }
+        assert!(
+            inside > 300 && outside > 300,
+            "{inside} inside, {outside} outside"
+        );
+    }
+}
