@@ -22,24 +22,53 @@ fn inputs(dir: &Path) -> Vec<PathBuf> {
     files
 }
 
+/// Replay every input of `fuzz/<kind>/<target>/`, on two threads (CI has two cores;
+/// the corpus replay is one of the longest tests of the `cli` suite).
 fn replay(kind: &str, min: usize) {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("fuzz")
         .join(kind);
-    let mut total = 0;
+    let mut work = Vec::new();
     for (name, target) in targets::TARGETS {
         for file in inputs(&root.join(name)) {
-            let data = std::fs::read(&file).unwrap();
-            let run = std::panic::catch_unwind(|| target(&data));
-            assert!(
-                run.is_ok(),
-                "{name}: {} fails (replay it with the fuzz binary)",
-                file.display()
-            );
-            total += 1;
+            work.push((*name, *target, file));
         }
     }
-    assert!(total >= min, "only {total} inputs under {}", root.display());
+    let failures: Vec<String> = std::thread::scope(|s| {
+        let lanes: Vec<_> = (0..2)
+            .map(|lane| {
+                let work = &work;
+                s.spawn(move || {
+                    work.iter()
+                        .skip(lane)
+                        .step_by(2)
+                        .filter_map(|(name, target, file)| {
+                            let data = std::fs::read(file).unwrap();
+                            std::panic::catch_unwind(|| target(&data))
+                                .is_err()
+                                .then(|| {
+                                    format!(
+                                        "{name}: {} fails (replay it with the fuzz binary)",
+                                        file.display()
+                                    )
+                                })
+                        })
+                        .collect::<Vec<_>>()
+                })
+            })
+            .collect();
+        lanes
+            .into_iter()
+            .flat_map(|h| h.join().expect("a replay lane"))
+            .collect()
+    });
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+    assert!(
+        work.len() >= min,
+        "only {} inputs under {}",
+        work.len(),
+        root.display()
+    );
 }
 
 /// Every target has a committed corpus, and every input of it passes.
