@@ -160,6 +160,7 @@ mod tests {
     //! with `|w_z − v|`, so the curve runs toward `w_z`; at the farthest point away.
     use super::*;
     use crate::num::rng::Rng;
+    use crate::num::round::{next_down, next_up};
     use rug::Float;
 
     const BITS: u32 = 600;
@@ -203,6 +204,19 @@ mod tests {
         let near = (rho.clone() - &d).square() + &dz2;
         let far = (rho + &d).square() + &dz2;
         (near, far, wz)
+    }
+
+    /// The decisions for the pair in both orders, with the cylinder's coordinate index.
+    fn both_orders(c: &Cylinder, p: &Sphere) -> [(Vec<DecidedFace>, usize); 2] {
+        let (ca, pa) = (
+            AnySurface::Cylinder(c.clone()),
+            AnySurface::Sphere(p.clone()),
+        );
+        assert!(decide(Some(&pa), Some(&pa)).is_empty());
+        [
+            (decide(Some(&ca), Some(&pa)), 1),
+            (decide(Some(&pa), Some(&ca)), 3),
+        ]
     }
 
     fn truth_of(decided: &[DecidedFace], k: usize, h: f64) -> Option<FaceTruth> {
@@ -261,23 +275,19 @@ mod tests {
             let axis = axis.map(|x| x * sign * scale);
             let c = Cylinder::new(o, [rho, rho], axis, None, [h0, h1]).unwrap();
             let p = Sphere::new(centre, big, None, None).unwrap();
-            let (ca, pa) = (
-                AnySurface::Cylinder(c.clone()),
-                AnySurface::Sphere(p.clone()),
-            );
-            empties += check_generic(&c, &p, &decide(Some(&ca), Some(&pa)), 1);
-            empties += check_generic(&c, &p, &decide(Some(&pa), Some(&ca)), 3);
-            assert!(decide(Some(&pa), Some(&pa)).is_empty());
+            for (got, k) in both_orders(&c, &p) {
+                empties += check_generic(&c, &p, &got, k);
+            }
             cases += 1;
         }
-        // Anti-vacuity: most faces of such random pairs miss the sphere.
+        // Anti-vacuity: more than a quarter of the faces checked miss the sphere.
         assert!(empties > cases, "{empties} empty faces in {cases} cases");
     }
 
     #[test]
     fn touching_faces_are_decided_on_the_side_the_curve_leaves_into() {
         let mut rng = Rng::new(1516);
-        let (mut inside, mut outside) = (0, 0);
+        let (mut inside, mut outside, mut ulp_empty) = (0, 0, 0);
         for i in 0..2000 {
             let (axis, len, perps) = AXES[rng.below(AXES.len())];
             let scale = [1.0, 0.25, 2f64.powi(180), 2f64.powi(-180)][i % 4];
@@ -340,20 +350,28 @@ mod tests {
             let leaves = if near { s } else { -s };
             let into = if end == 0 { 1.0 } else { -1.0 };
             let expected = (leaves == into).then_some(FaceTruth::TouchInside);
-            let (ca, pa) = (
-                AnySurface::Cylinder(c.clone()),
-                AnySurface::Sphere(p.clone()),
-            );
-            for (got, k) in [
-                (decide(Some(&ca), Some(&pa)), 1),
-                (decide(Some(&pa), Some(&ca)), 3),
-            ] {
+            for (got, k) in both_orders(&c, &p) {
                 assert_eq!(
                     truth_of(&got, k, hs),
                     expected,
                     "{c:?} {p:?} near {near} face {hs}"
                 );
                 check_generic(&c, &p, &got, k);
+            }
+            // One ulp off touching, both ways: R² is then outside the face's range
+            // (the face is empty, decided exactly) or inside it (two transversal roots,
+            // left to the interval solve) — never a touch.
+            for radius in [next_down(big * scale), next_up(big * scale)] {
+                let q = Sphere::new(sc(centre), radius, None, None).unwrap();
+                let (lo, hi, _) = face_range(&c, &q, hs);
+                let r2 = f(radius).square();
+                let misses = r2 < lo || r2 > hi;
+                for (got, k) in both_orders(&c, &q) {
+                    let want = misses.then_some(FaceTruth::Empty);
+                    assert_eq!(truth_of(&got, k, hs), want, "{c:?} {q:?} face {hs}");
+                    check_generic(&c, &q, &got, k);
+                }
+                ulp_empty += usize::from(misses);
             }
             if expected.is_some() {
                 inside += 1;
@@ -365,5 +383,7 @@ mod tests {
             inside > 300 && outside > 300,
             "{inside} inside, {outside} outside"
         );
+        // Each touching case has exactly one one-ulp-off radius whose face misses.
+        assert_eq!(ulp_empty, inside + outside, "{ulp_empty} empty one ulp off");
     }
 }
