@@ -235,8 +235,9 @@ pub(crate) fn sampled_conic(
 /// The number of vertices whose chords stay within `tolerance` of a conic of largest
 /// semi-axis `a` (default tolerance `10⁻⁴·a`), between 16 and 65,536.
 fn vertex_count(a: f64, tolerance: Option<f64>) -> usize {
-    let tol = tolerance.unwrap_or(1e-4 * a);
-    let ratio = (tol / a).min(1.0);
+    // The default is relative: `1e-4·a / a` would underflow to 0 (and ask for the cap)
+    // on a subnormal conic (issue 20: a sphere of radius 1e-323 sampled 65,536 times).
+    let ratio = tolerance.map_or(1e-4, |tol| (tol / a).min(1.0));
     // a(1 − cos(π/n)) ≤ tol  ⇔  n ≥ π / acos(1 − tol/a)
     let n = std::f64::consts::PI / (1.0 - ratio).acos();
     if n.is_finite() {
@@ -284,4 +285,34 @@ pub(crate) fn sampled_answer(
     out.bits = 53;
     out.reason = None;
     Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::vertex_count;
+
+    /// The default chord tolerance is relative, so the count does not depend on the
+    /// conic's size — from the smallest subnormal to the largest double (issue 20: a
+    /// sphere of radius 1e-323 was sampled with the 65,536-vertex cap); an explicit
+    /// tolerance of `1e-4·a` gives the same count wherever that product is exact.
+    #[test]
+    fn the_default_vertex_count_is_the_same_at_every_magnitude() {
+        let n = vertex_count(1.0, None);
+        // a(1 − cos(π/n)) ≤ 1e-4·a: n = ⌈π / acos(1 − 1e-4)⌉ = 223.
+        assert_eq!(n, 223);
+        for e in -1074..=1023 {
+            // 2^e exactly, subnormals included (`powi` would underflow on the way).
+            let a = if e >= -1022 {
+                f64::from_bits(((e + 1023) as u64) << 52)
+            } else {
+                f64::from_bits(1u64 << (e + 1074))
+            };
+            assert_eq!(vertex_count(a, None), n, "a = 2^{e}");
+            if (-900..900).contains(&e) {
+                assert_eq!(vertex_count(a, Some(1e-4 * a)), n, "a = 2^{e}, explicit");
+            }
+        }
+        assert_eq!(vertex_count(1.0, Some(2.0)), 16);
+        assert_eq!(vertex_count(1.0, Some(0.0)), 1 << 16);
+    }
 }
