@@ -48,6 +48,8 @@ mod near_tangency_curves;
 mod nearest_ties;
 #[path = "../nurbs_exact.rs"]
 mod nurbs_exact;
+#[path = "../polylines_exact.rs"]
+mod polylines_exact;
 #[path = "../project_conic_exact.rs"]
 mod project_conic_exact;
 #[path = "../project_curve.rs"]

@@ -50,6 +50,9 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
         if let Some(r) = identical_curves(a, b) {
             return Ok(r);
         }
+        if let Some(r) = super::polylines::pair(a, b, opts) {
+            return Ok(r);
+        }
         if let Some(r) = crate::ops::algebraic::overlap::curve_overlap(a, b, opts.deadline) {
             return Ok(r);
         }

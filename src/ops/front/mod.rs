@@ -15,6 +15,7 @@ mod intersect_curved;
 mod intersect_surfaces;
 mod points;
 mod poles;
+mod polylines;
 mod project;
 mod project_curved;
 mod sections;
