@@ -253,10 +253,10 @@ fn lines_across_a_nurbs_sphere() {
     }
     fails.finish("lines_across_a_nurbs_sphere");
     assert!(tried * 4 >= cases(24), "{tried}");
-    assert!(
-        spent * 4 <= tried,
-        "{spent} of {tried} spent their box budget"
-    );
+    // Since the f64-first search (`ops::certified::pieces`, issue 21) every line through
+    // a knot point is decided on f64 intervals, proven across the knot: none may spend
+    // its budget (192 cases with GEOCERT_CURVED_CASES=8 at the time of writing).
+    assert_eq!(spent, 0, "{spent} of {tried} spent their box budget");
 }
 
 /// Lines against a NURBS cylinder of radius `5k`, height `[h₀, h₁]`: through a

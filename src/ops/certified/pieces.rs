@@ -72,6 +72,46 @@ pub fn certify_roots_in_pieces<S: System>(
     not_an_answer: &dyn Fn(&Root) -> bool,
     tiles: Option<&[(S, Unknowns)]>,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
+    f64_first(opts, |o| {
+        in_pieces(pieces, whole, guesses, o, not_an_answer, tiles)
+    })
+}
+
+/// Run `search` with f64 intervals only first, and keep that answer when it is
+/// complete with every root `verified`; otherwise run it again with the caller's
+/// precision ladder (issue 21: a root on a knot line straddles the knot in every box,
+/// so no smooth Krawczyk test proves it at any precision, and the search escalated
+/// such clusters to 512 bits — seconds per line of the NURBS sphere — before the
+/// proof across the knot, which works on f64 intervals, decided them). The first
+/// answer is sound on its own (the same search and proofs at one precision level);
+/// it is dropped, not merged, when it falls short, so the second is exactly the
+/// answer without this step. A singular box is not kept from the first run: higher
+/// precision may still separate it into two verified roots.
+fn f64_first(
+    opts: &Options,
+    search: impl Fn(&Options) -> Result<Certified<Vec<CertifiedRoot>>, GeomError>,
+) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
+    if opts.max_bits > 53 {
+        let quick = Options {
+            max_bits: 53,
+            ..opts.clone()
+        };
+        let r = search(&quick)?;
+        if r.complete && r.value.iter().all(|x| x.status == Status::Verified) {
+            return Ok(r);
+        }
+    }
+    search(opts)
+}
+
+fn in_pieces<S: System>(
+    pieces: &[(S, Unknowns)],
+    whole: &Unknowns,
+    guesses: &[Vec<f64>],
+    opts: &Options,
+    not_an_answer: &dyn Fn(&Root) -> bool,
+    tiles: Option<&[(S, Unknowns)]>,
+) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
     let share = Options {
         max_boxes: (opts.max_boxes / pieces.len().max(1)).max(1),
         ..opts.clone()
@@ -121,14 +161,16 @@ pub fn certify_roots_across<S: System>(
     guesses: &[Vec<f64>],
     opts: &Options,
 ) -> Result<Certified<Vec<CertifiedRoot>>, GeomError> {
-    let found = super::find_roots(sys, whole, guesses, opts, |_| false)?;
-    let search = Search {
-        undecided: found.undecided,
-        searched: found.searched,
-        bits: found.bits,
-        reason: found.reason,
-    };
-    Ok(finish(found.roots, Some(tiles), whole, search))
+    f64_first(opts, |o| {
+        let found = super::find_roots(sys, whole, guesses, o, |_| false)?;
+        let search = Search {
+            undecided: found.undecided,
+            searched: found.searched,
+            bits: found.bits,
+            reason: found.reason,
+        };
+        Ok(finish(found.roots, Some(tiles), whole, search))
+    })
 }
 
 /// What the searches of the pieces left: their undecided boxes, whether they covered
