@@ -122,7 +122,7 @@ impl Axis {
         let period_cells = match period {
             Some(p) => {
                 let n = (p / t.delta).ceil();
-                if !(n < 1e15) {
+                if n.is_nan() || n >= 1e15 {
                     return None;
                 }
                 Some((n as i64).max(1))

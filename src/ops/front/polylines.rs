@@ -258,7 +258,7 @@ fn assemble(
         );
     };
     let Some(pieces) = chain else {
-        points.sort_by(|p, q| order(p, q));
+        points.sort_by(order);
         let pts = points.into_iter().map(|f| f.point).collect();
         return Certified::exact(Answer::from_points(pts), Arithmetic::Rational, 53);
     };
