@@ -13,7 +13,7 @@ use geocert::curve::{AnyCurve2, AnyCurve3, Polyline};
 use geocert::geom::Plane;
 use geocert::num::rng::Rng;
 use geocert::ops::{self, Answer, Linear, LinearObject, Options, Point, Shape};
-use geocert::Status;
+use geocert::{Certified, Status};
 use nalgebra::Vector3;
 use rug::float::Round;
 use rug::{Float, Rational};
@@ -108,6 +108,17 @@ fn assert_points(got: &[Point], truth: &[Truth], slots: &[usize], case: &str) {
             let b = p.param_box.as_ref().expect("boxes")[slot][0];
             assert!(q(b[0]) <= t.t[k] && t.t[k] <= q(b[1]), "{case}: box {b:?}");
         }
+    }
+}
+
+/// The points of an answer that must be exact and complete (none for `empty`).
+fn exact_points(r: &Certified<Answer>, label: &str) -> Vec<Point> {
+    assert_eq!(r.status, Status::Exact, "{label}: {r:?}");
+    assert!(r.complete, "{label}");
+    match &r.value {
+        Answer::Empty => vec![],
+        Answer::Points(p) => p.clone(),
+        other => panic!("{label}: {other:?}"),
     }
 }
 
@@ -239,14 +250,7 @@ fn polylines_against_planes_are_decided_exactly() {
         match plane_truth(&v, &tv, normal, d) {
             PlaneTruth::Points(truth) => {
                 points += 1;
-                assert_eq!(r.status, Status::Exact, "{label}: {r:?}");
-                assert!(r.complete, "{label}");
-                let got = match &r.value {
-                    Answer::Empty => vec![],
-                    Answer::Points(p) => p.clone(),
-                    other => panic!("{label}: {other:?}"),
-                };
-                assert_points(&got, &truth, &[slot], &label);
+                assert_points(&exact_points(&r, &label), &truth, &[slot], &label);
             }
             PlaneTruth::Run {
                 ends,
@@ -407,14 +411,7 @@ fn polyline2_pairs_without_overlap_are_decided_exactly() {
         checked += 1;
         truth.sort_by(|a, b| a.t.cmp(&b.t));
         truth.dedup();
-        assert_eq!(r.status, Status::Exact, "{label}: {r:?}");
-        assert!(r.complete, "{label}");
-        let got = match &r.value {
-            Answer::Empty => vec![],
-            Answer::Points(p) => p.clone(),
-            other => panic!("{label}: {other:?}"),
-        };
-        assert_points(&got, &truth, &[0, 1], &label);
+        assert_points(&exact_points(&r, &label), &truth, &[0, 1], &label);
     }
     eprintln!("polyline2 pairs: {checked} checked, {other} with overlaps or continua");
     assert!(checked > cases() / 2 && other > 0, "{checked} {other}");
