@@ -141,9 +141,53 @@ fn bad_ranges_are_typed_errors() {
         let named = r["error"]["field"].as_str().unwrap();
         assert!(named.starts_with(field), "{range}: {r}");
     }
-    let ray2 = json!({"type": "line2", "origin": [0, 0], "dir": [1, 0], "range": [0, null]});
-    let seg2 = json!({"type": "segment2", "a": [0, 0], "b": [1, 1]});
-    let r = intersect(ray2, seg2);
-    assert_eq!(r["error"]["kind"], "unsupported", "{r}");
-    assert_eq!(r["error"]["field"], "objects[0].range", "{r}");
+}
+
+/// Rays in the plane are read and honoured: a ray along the x-axis from 0 meets the
+/// segment from (−1, −1) to (1, 1) at its start, misses one behind its start, two
+/// opposite collinear rays (x ≤ 2 and x ≥ 1) overlap in a segment, and two rays the
+/// same way in the later ray.
+#[test]
+fn rays_in_the_plane_are_answered_exactly() {
+    let ray2 = |o: [i32; 2], d: [i32; 2], r: Value| json!({"type": "line2", "origin": o, "dir": d, "range": r});
+    let seg2 = |a: [i32; 2], b: [i32; 2]| json!({"type": "segment2", "a": a, "b": b});
+    let r = intersect(
+        ray2([0, 0], [1, 0], json!([0, null])),
+        seg2([-1, -1], [1, 1]),
+    );
+    assert_eq!(
+        (r["status"].as_str(), r["kind"].as_str()),
+        (Some("exact"), Some("points")),
+        "{r}"
+    );
+    assert_eq!(r["points"][0]["xyz"], json!([0.0, 0.0]), "{r}");
+    let r = intersect(
+        ray2([0, 0], [1, 0], json!([0, null])),
+        seg2([-2, -1], [-1, 1]),
+    );
+    assert_eq!(
+        (r["status"].as_str(), r["kind"].as_str()),
+        (Some("exact"), Some("empty")),
+        "{r}"
+    );
+    let r = intersect(
+        ray2([0, 0], [1, 0], json!([null, 2])),
+        ray2([3, 0], [-1, 0], json!([null, 2])),
+    );
+    assert_eq!(
+        (r["status"].as_str(), r["kind"].as_str()),
+        (Some("exact"), Some("segment")),
+        "{r}"
+    );
+    let r = intersect(
+        ray2([0, 0], [1, 0], json!([0, null])),
+        ray2([3, 0], [2, 0], json!([0, null])),
+    );
+    assert_eq!(
+        (r["status"].as_str(), r["kind"].as_str()),
+        (Some("exact"), Some("ray")),
+        "{r}"
+    );
+    assert_eq!(r["ray"]["start"]["xyz"], json!([3.0, 0.0]), "{r}");
+    assert_eq!(r["ray"]["dir"], json!([1.0, 0.0]), "{r}");
 }

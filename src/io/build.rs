@@ -109,25 +109,6 @@ fn range<T: FromNum>(
     })
 }
 
-/// A `line2`'s `range`: as [`range`], but a ray in the plane is refused (`unsupported`,
-/// naming `range`): the 2D kernels take closed ranges only.
-fn closed_range<T: FromNum>(
-    r: &Option<[Option<Num>; 2]>,
-    field: &str,
-) -> Result<Option<ParamRange<T>>, BuildError> {
-    let r = range(r, field)?;
-    if matches!(r, Some(ParamRange::AtLeast(_) | ParamRange::AtMost(_))) {
-        return Err(GeomError::Unsupported {
-            field: field.into(),
-            reason: "a ray in the plane (a `line2` range with a null end) is not \
-                     implemented in this build; give both ends"
-                .into(),
-        }
-        .into());
-    }
-    Ok(r)
-}
-
 /// One object of a case as a shape; errors name fields below `prefix`.
 pub fn shape(spec: &ObjectSpec, prefix: &str) -> Result<Shape, GeomError> {
     let at = |e: GeomError| e.at(prefix);
@@ -200,7 +181,7 @@ fn linear_object<T: FromNum>(spec: &ObjectSpec) -> Result<LinearObject<T>, Build
         }) => LinearObject::Line2(Line2::with_param_range(
             vec2(origin, "origin")?,
             vec2(dir, "dir")?,
-            closed_range(r, "range")?,
+            range(r, "range")?,
         )?),
         ObjectSpec::Segment2(Segment2Spec { a, b }) => {
             LinearObject::Segment2(Segment2::new(vec2(a, "a")?, vec2(b, "b")?)?)

@@ -256,11 +256,14 @@ impl LinearObject<Rational> {
             LinearObject::Plane(Plane::Implicit { normal, d }) => {
                 vec![("normal", normal.iter().collect()), ("d", vec![d])]
             }
-            LinearObject::Line2(l) => vec![
-                ("origin", l.origin().iter().collect()),
-                ("dir", l.dir().iter().collect()),
-                ("range", l.range().map_or(vec![], |r| r.iter().collect())),
-            ],
+            LinearObject::Line2(l) => {
+                let (lo, hi) = l.bounds();
+                vec![
+                    ("origin", l.origin().iter().collect()),
+                    ("dir", l.dir().iter().collect()),
+                    ("range", lo.into_iter().chain(hi).collect()),
+                ]
+            }
             LinearObject::Segment2(s) => {
                 vec![("a", s.a().iter().collect()), ("b", s.b().iter().collect())]
             }

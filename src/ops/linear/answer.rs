@@ -321,6 +321,34 @@ pub(crate) fn line_line<T: Coord>(
     }
 }
 
+/// An answer of two objects of the plane `z = 0` computed in space, with the third
+/// coordinate (zero) dropped from every point, box and direction.
+pub(crate) fn in_plane(mut c: Certified<Answer>) -> Certified<Answer> {
+    fn flat(p: &mut Point) {
+        p.xyz.truncate(2);
+        p.xyz_box.truncate(2);
+        if let Some(e) = p.exact.as_mut() {
+            e.xyz.truncate(2);
+        }
+    }
+    match &mut c.value {
+        Answer::Points(ps) => ps.iter_mut().for_each(flat),
+        Answer::Segment(s) | Answer::Arc(s) => {
+            flat(&mut s.a);
+            flat(&mut s.b);
+        }
+        Answer::Ray(r) => {
+            flat(&mut r.start);
+            r.dir.truncate(2);
+            if let Some(d) = r.exact_dir.as_mut() {
+                d.truncate(2);
+            }
+        }
+        _ => {}
+    }
+    c
+}
+
 /// The carrier of a 2D line or segment.
 fn carrier2<T: Coord>(l: Linear2<'_, T>) -> LineAnswer {
     let n = |x: Rational| Q::rational(&x, false).r.nearest;

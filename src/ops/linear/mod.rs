@@ -89,12 +89,16 @@ fn intersect_in<T: Kernel>(
                 return Ok(answer::plane_plane(T::plane_plane(p, q, keep)));
             }
             if let (Some(l), Some(m)) = (a.linear2(), b.linear2()) {
-                // The 2D kernel reads closed ranges only: a ray would be its whole line.
-                if let Some(i) = [l, m].iter().position(is_ray2) {
-                    return Err(GeomError::Unsupported {
-                        field: format!("objects[{i}].range"),
-                        reason: "a ray in the plane is not implemented in this build".into(),
-                    });
+                // The 2D kernel reads closed ranges only: a pair with a ray is decided
+                // in space, in the plane z = 0 (an exact embedding: same parameters,
+                // same decision, coordinates with z = 0 dropped after).
+                if [l, m].iter().any(is_ray2) {
+                    let (x, y) = (in_space(a)?, in_space(b)?);
+                    let (Some(lx), Some(ly)) = (x.linear(), y.linear()) else {
+                        return Err(unsupported_pair(objects));
+                    };
+                    let r = answer::line_line(T::line_line(lx, ly, keep), lx, keep);
+                    return Ok(answer::in_plane(r));
                 }
                 return Ok(answer::lines2(T::lines2(l, m, keep), l));
             }
@@ -112,6 +116,22 @@ fn intersect_in<T: Kernel>(
             reason: format!("intersect takes 2 or 3 objects, found {}", other.len()),
         }),
     }
+}
+
+/// A 2D line (ray, ranged line) or segment as the same object in the plane `z = 0`.
+fn in_space<T: Coord>(o: &LinearObject<T>) -> Result<LinearObject<T>, GeomError> {
+    let lift = |v: &nalgebra::Vector2<T>| Vector3::new(v[0].clone(), v[1].clone(), T::zero_coord());
+    Ok(match o {
+        LinearObject::Line2(l) => LinearObject::Line(crate::geom::Line::with_param_range(
+            lift(l.origin()),
+            lift(l.dir()),
+            l.param_range().cloned(),
+        )?),
+        LinearObject::Segment2(s) => {
+            LinearObject::Segment(crate::geom::Segment::new(lift(s.a()), lift(s.b()))?)
+        }
+        other => other.clone(),
+    })
 }
 
 fn is_ray2<T: Coord>(l: &crate::geom::Linear2<'_, T>) -> bool {
