@@ -18,7 +18,7 @@ use rug::Rational;
 
 use crate::certificate::{Arithmetic, Certified};
 use crate::curve::{AnyCurve2, AnyCurve3};
-use crate::geom::{Segment, Segment2};
+use crate::geom::{Plane, Segment, Segment2};
 use crate::num::round::round_rational;
 use crate::ops::answer::{Answer, Point, SegmentAnswer};
 use crate::ops::linear;
@@ -169,12 +169,103 @@ pub(super) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Option<Certified<Ans
             }
         }
     }
-    if !usable.iter().all(|u| *u) {
-        return None; // a polyline that is one point
+    if let Some(k) = usable.iter().position(|u| !*u) {
+        return Some(one_point(&sides, k));
     }
     let mut r = assemble(points, overlaps, &collapsed, &sides);
     r.bits = bits;
     Some(r)
+}
+
+/// A polyline `sides[k]` whose points are all one point `P`: `empty` when `P` is not
+/// on the other object (decided exactly), else every parameter of the polyline is a
+/// solution at `P` — a continuum a list of points cannot hold: `undecided` with that
+/// reason. (Subdivision could only spend its budget on such a pair: issue 20.)
+fn one_point(sides: &[Side; 2], k: usize) -> Certified<Answer> {
+    let Side::Polyline { points, params } = &sides[k] else {
+        unreachable!("only a polyline has pieces that are all collapsed")
+    };
+    let at: Vec<Rational> = points[0]
+        .iter()
+        .map(|x| Rational::from_f64(*x).expect("finite by construction"))
+        .collect();
+    let on = match &sides[1 - k] {
+        Side::Linear(l) => on_linear(&at, &l.exact()),
+        Side::Polyline { points: other, .. } => {
+            let q = |p: &Vec<f64>| -> Vec<Rational> {
+                p.iter()
+                    .map(|x| Rational::from_f64(*x).expect("finite by construction"))
+                    .collect()
+            };
+            other.len() == 1
+                || other.windows(2).any(|w| between(&at, &q(&w[0]), &q(&w[1])))
+                || other.iter().any(|p| q(p) == at)
+        }
+    };
+    if on {
+        return Certified::undecided(
+            Answer::Empty,
+            Arithmetic::Rational,
+            53,
+            format!(
+                "objects[{k}] stays at the common point {:?} for every parameter in [{}, {}]: \
+                 a continuum of parameters, which a list of points cannot hold",
+                points[0],
+                params[0],
+                params[params.len() - 1]
+            ),
+        );
+    }
+    let mut r = Certified::exact(Answer::Empty, Arithmetic::Rational, 53);
+    r.reason = Some(format!(
+        "objects[{k}] is one point, not on the other object"
+    ));
+    r
+}
+
+/// Whether the point `x` lies on the linear object, exactly.
+fn on_linear(x: &[Rational], l: &LinearObject<Rational>) -> bool {
+    let sub = |a: &[Rational], b: &[Rational]| -> Vec<Rational> {
+        a.iter()
+            .zip(b)
+            .map(|(a, b)| Rational::from(a - b))
+            .collect()
+    };
+    let dot = |a: &[Rational], b: &[Rational]| -> Rational {
+        a.iter().zip(b).map(|(a, b)| Rational::from(a * b)).sum()
+    };
+    let on_carrier =
+        |o: &[Rational], d: &[Rational], lo: Option<&Rational>, hi: Option<&Rational>| {
+            // x − o parallel to d (every 2×2 minor zero), its parameter within the range
+            let e = sub(x, o);
+            let parallel = (0..d.len()).all(|i| {
+                (i + 1..d.len())
+                    .all(|j| Rational::from(&d[i] * &e[j]) == Rational::from(&d[j] * &e[i]))
+            });
+            let t = dot(&e, d) / dot(d, d);
+            parallel && lo.is_none_or(|lo| t >= *lo) && hi.is_none_or(|hi| t <= *hi)
+        };
+    match l {
+        LinearObject::Line(line) => {
+            let (lo, hi) = line.bounds();
+            on_carrier(line.origin().as_slice(), line.dir().as_slice(), lo, hi)
+        }
+        LinearObject::Line2(line) => {
+            let (lo, hi) = line.bounds();
+            on_carrier(line.origin().as_slice(), line.dir().as_slice(), lo, hi)
+        }
+        LinearObject::Segment(seg) => between(x, seg.a().as_slice(), seg.b().as_slice()),
+        LinearObject::Segment2(seg) => between(x, seg.a().as_slice(), seg.b().as_slice()),
+        LinearObject::Plane(Plane::Implicit { normal, d }) => {
+            dot(normal.as_slice(), x) + d.clone() == 0
+        }
+        LinearObject::Plane(Plane::Parametric { origin, u, v }) => {
+            let c =
+                |i: usize, j: usize| Rational::from(&u[i] * &v[j]) - Rational::from(&u[j] * &v[i]);
+            let n = [c(1, 2), c(2, 0), c(0, 1)];
+            dot(&n, &sub(x, origin.as_slice())) == 0
+        }
+    }
 }
 
 fn side(s: &Shape) -> Option<Side<'_>> {
