@@ -363,3 +363,96 @@ pub fn surface_curve_tiles<'a, Sf: Surface, C: Curve<3>, S>(
     }
     tiles
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::certificate::Arithmetic;
+    use crate::num::interval::Interval;
+    use std::cell::RefCell;
+
+    fn root(status: Status) -> CertifiedRoot {
+        CertifiedRoot {
+            params: vec![0.5],
+            enclosure: vec![Interval::new("t", 0.25, 0.75).expect("interval")],
+            status,
+            max_roots: 1 + u32::from(status == Status::VerifiedSingular),
+            bits: 53,
+            perturbation: None,
+            reason: None,
+        }
+    }
+
+    /// An answer of the search at `bits` with these root statuses, complete or not.
+    fn answer(statuses: &[Status], complete: bool, bits: u32) -> Certified<Vec<CertifiedRoot>> {
+        let roots = statuses.iter().map(|s| root(*s)).collect();
+        let mut c = Certified::exact(roots, Arithmetic::of_interval_bits(bits), bits);
+        c.status = Status::Verified;
+        c.complete = complete;
+        c
+    }
+
+    /// The wrapper's whole contract, on a scripted search that records the precision of
+    /// each call: the 53-bit answer is kept only when complete with every root verified;
+    /// otherwise the full ladder's answer is returned unchanged (never merged); a caller
+    /// already at 53 bits is searched once.
+    #[test]
+    fn the_f64_pass_is_kept_only_when_it_decides_everything() {
+        use Status::{Undecided, Verified, VerifiedSingular};
+        let cases: [(&[Status], bool, usize); 6] = [
+            (&[Verified, Verified], true, 1),
+            (&[], true, 1), // proven empty
+            (&[Verified], false, 2),
+            (&[Verified, VerifiedSingular], true, 2),
+            (&[Undecided], true, 2),
+            (&[], false, 2),
+        ];
+        for (statuses, complete, calls) in cases {
+            let seen = RefCell::new(Vec::new());
+            let opts = Options {
+                max_bits: 512,
+                ..Options::default()
+            };
+            let r = f64_first(&opts, |o| {
+                seen.borrow_mut().push(o.max_bits);
+                Ok(if o.max_bits == 53 {
+                    answer(statuses, complete, 53)
+                } else {
+                    answer(&[Verified, Verified, Verified], true, 512)
+                })
+            })
+            .expect("search");
+            let seen = seen.into_inner();
+            assert_eq!(seen.len(), calls, "{statuses:?} {complete}");
+            assert_eq!(seen[0], 53);
+            if calls == 1 {
+                assert_eq!(r, answer(statuses, complete, 53));
+            } else {
+                assert_eq!(seen[1], 512);
+                assert_eq!(r, answer(&[Verified, Verified, Verified], true, 512));
+            }
+        }
+        // At 53 bits already: one search at the caller's options, whatever it answers.
+        let calls = RefCell::new(0);
+        let opts = Options {
+            max_bits: 53,
+            ..Options::default()
+        };
+        let r = f64_first(&opts, |_| {
+            *calls.borrow_mut() += 1;
+            Ok(answer(&[Undecided], false, 53))
+        })
+        .expect("search");
+        assert_eq!(*calls.borrow(), 1);
+        assert!(!r.complete);
+        // An error of the first pass is the caller's error.
+        let opts = Options {
+            max_bits: 512,
+            ..Options::default()
+        };
+        let r = f64_first(&opts, |_| {
+            Err(GeomError::ZeroDirection { field: "x".into() })
+        });
+        assert!(r.is_err());
+    }
+}
