@@ -417,6 +417,20 @@ fn polyline2_pairs_without_overlap_are_decided_exactly() {
     assert!(checked > cases() / 2 && other > 0, "{checked} {other}");
 }
 
+/// The scales of the linear families: 1, dyadic, 2^±200, 10^±150 and 0.1 (products
+/// and quotients then round, and the truth's exactness matters).
+fn scales() -> [f64; 7] {
+    [
+        1.0,
+        0.125,
+        2f64.powi(200),
+        2f64.powi(-200),
+        1e150,
+        1e-150,
+        0.1,
+    ]
+}
+
 /// A line, ray or segment as the truth sees it: `origin + s·dir`, `s ∈ [lo, hi]` (an
 /// infinite end is `None`), all exact.
 struct Lin {
@@ -688,15 +702,7 @@ fn polylines_against_lines_rays_and_segments_are_decided_exactly() {
     let mut rng = Rng::new(0x9017_11e7);
     let (mut points, mut empty, mut runs, mut mixed) = (0, 0, 0, 0);
     for case in 0..cases() {
-        let scale = [
-            1.0,
-            0.125,
-            2f64.powi(200),
-            2f64.powi(-200),
-            1e150,
-            1e-150,
-            0.1,
-        ][case % 7];
+        let scale = scales()[case % 7];
         let dim = 2 + case % 2;
         let n = 2 + rng.below(5);
         let mut v = vertices(&mut rng, n, dim, 2, scale);
@@ -765,15 +771,7 @@ fn lines_rays_and_segments_against_each_other_are_decided_exactly() {
     let mut rng = Rng::new(0x9017_11e8);
     let mut kinds: BTreeMap<&str, usize> = BTreeMap::new();
     for case in 0..cases() {
-        let scale = [
-            1.0,
-            0.125,
-            2f64.powi(200),
-            2f64.powi(-200),
-            1e150,
-            1e-150,
-            0.1,
-        ][case % 7];
+        let scale = scales()[case % 7];
         let dim = if case % 3 == 2 { 3 } else { 2 };
         // Half the cases on one carrier: anchors p + k·d, both objects through two.
         let collinear = rng.coin();
@@ -888,15 +886,7 @@ fn polylines_that_are_one_point_are_decided_at_once() {
     let mut rng = Rng::new(0x9017_11e9);
     let (mut on, mut off) = (0, 0);
     for case in 0..cases() {
-        let scale = [
-            1.0,
-            0.125,
-            2f64.powi(200),
-            2f64.powi(-200),
-            1e150,
-            1e-150,
-            0.1,
-        ][case % 7];
+        let scale = scales()[case % 7];
         let dim = 2 + case % 2;
         let mut p = vertices(&mut rng, 1, dim, 2, scale);
         let n = 2 + rng.below(3);

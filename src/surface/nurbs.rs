@@ -32,6 +32,16 @@ pub struct NurbsSurface {
     pin: Option<[usize; 2]>,
 }
 
+/// How wide a box must be against a knot span, in `u` or in `v`, for the hull of the
+/// Bézier net to narrow its point (or else the centred form's point is unbounded). The
+/// hull is what keeps a whole span's enclosure bounded (the centred form of the
+/// weight can reach 0 there); on smaller boxes the centred form's excess, quadratic
+/// in the width, is small, and the hull's 2(p+1)(q+1) blossoms cost several times the
+/// rest of the evaluation: with it on every box wider than 1e-6, 60–77 % of the
+/// certified NURBS benches' time went into it, and still 75 % with a share of 1/8
+/// (BENCHMARKS.md, 2026-11-28). Sound either way: the hull only narrows.
+const HULL_SHARE: f64 = 0.5;
+
 impl NurbsSurface {
     /// A NURBS patch; errors name `degree_u`, `degree_v`, `knots_u`, `knots_v`
     /// (length, order, multiplicity, empty domain), `points` and `weights`.
@@ -155,7 +165,9 @@ impl NurbsSurface {
     /// over the box ([`super::patch_hull`]), the box cut at the span's knots on the
     /// sides where a neighbouring span of `touched` takes over (the first and last span
     /// touched are continued over all of the box, as the basis evaluation is, so that
-    /// parameters beyond the domain stay enclosed).
+    /// parameters beyond the domain stay enclosed). Only boxes at least [`HULL_SHARE`]
+    /// times as wide as the span in `u` or in `v` are narrowed (or whose point is
+    /// unbounded).
     fn narrow<T: Real>(
         &self,
         jet: Vec<[T; 3]>,
@@ -177,6 +189,22 @@ impl NurbsSurface {
             };
             [lo, hi]
         };
+        let (bu, bv) = (u.bounds(), v.bounds());
+        // The whole box's width against the span's: a box straddling a knot counts as
+        // wide on both sides when it is, however the knot cuts it.
+        let share = |d: usize, [a, b]: [f64; 2]| {
+            let (s, k) = (spans[d], &self.knots[d]);
+            (b - a) / (k[s + 1] - k[s])
+        };
+        let unbounded = jet.first().is_some_and(|p| {
+            p.iter().any(|x| {
+                let (lo, hi) = x.bounds();
+                !(lo.is_finite() && hi.is_finite())
+            })
+        });
+        if share(0, [bu.0, bu.1]).max(share(1, [bv.0, bv.1])) < HULL_SHARE && !unbounded {
+            return jet;
+        }
         meet_point(jet, u, v, |bu, bv| {
             let pair = SpanPair {
                 knots: [&self.knots[0], &self.knots[1]],
