@@ -44,7 +44,10 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
         return linear::intersect(&linear, opts);
     }
     if let [a, b] = shapes {
-        if let Some(r) = algebraic(a, b, opts.deadline) {
+        // A ray against a bounded shape is its piece up to that shape's box (`rays`).
+        let cut = [super::rays::cut(a, b), super::rays::cut(b, a)];
+        let (ca, cb) = (cut[0].as_ref().unwrap_or(a), cut[1].as_ref().unwrap_or(b));
+        if let Some(r) = algebraic(ca, cb, opts.deadline) {
             return r;
         }
         if let Some(r) = identical_curves(a, b) {

@@ -18,6 +18,7 @@ mod poles;
 mod polylines;
 mod project;
 mod project_curved;
+mod rays;
 mod sections;
 mod seeds;
 
