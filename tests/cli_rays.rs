@@ -205,7 +205,12 @@ fn rays_in_the_plane_are_answered_exactly() {
 fn rays_against_circles_and_spheres_are_exact() {
     let mut text = String::new();
     let mut truths: Vec<Vec<(Vec<f64>, f64)>> = Vec::new();
-    let frames: [(&[f64], &[f64], f64); 6] = [
+    // Pythagorean directions, and hits on the circle's seam (angle 0), the sphere's
+    // seam (u = 0) and its poles.
+    let frames: [(&[f64], &[f64], f64); 9] = [
+        (&[1.0, -1.0], &[5.0, 0.0], 5.0),
+        (&[1.0, -1.0, 2.0], &[7.0, 0.0, 0.0], 7.0),
+        (&[1.0, -1.0, 2.0], &[0.0, 0.0, 7.0], 7.0),
         (&[0.0, 0.0], &[3.0, 4.0], 5.0),
         (&[-2.0, 1.0], &[3.0, 4.0], 5.0),
         (&[3.0, -2.5], &[3.0, 4.0], 5.0),
