@@ -15,11 +15,16 @@
 //!   exactly on the seam `u = 0 ≡ 2π` of a circle, sphere or torus, at a sphere's poles,
 //!   one ulp or `10⁻ᵏ` off them, and tangencies there at the same gaps), graded the same
 //!   way: every certified box holds one true point (a seam copy twice would be a second
-//!   box on the same truth and a wrong count), a `complete` answer misses none.
+//!   box on the same truth and a wrong count), a `complete` answer misses none; every
+//!   parameter box holds the true parameter (angles modulo `2π`);
+//! - surface ∩ surface across seams and poles (`geocert::robust::curved::ssi`): two
+//!   spheres meeting in a circle through the first one's pole and seam, or touching it
+//!   there, graded against the exact circle (topology, every vertex within its bound,
+//!   one turn around the axis, parameters that give back the vertex).
 //!
 //! ```sh
 //! GEOCERT_SOAK_LINEAR=1000000 GEOCERT_SOAK_CURVED=20000 GEOCERT_SOAK_SEAMS=20000 \
-//!     GEOCERT_SOAK_THREADS=2 cargo run --release --example soak
+//!     GEOCERT_SOAK_SSI=2000 GEOCERT_SOAK_THREADS=2 cargo run --release --example soak
 //! ```
 //! `GEOCERT_SOAK_SEED` picks the stream (default 20). The exit status is 1 when any
 //! certificate is wrong or any case panicked. Every failing case is printed with its
@@ -148,6 +153,25 @@ fn seams(t: &mut [Tally], base: u64, i: u64) {
     curved_of(&Family::SEAMS, base ^ 0x5ea_5ea, t, i);
 }
 
+/// Surface ∩ surface case `i` across seams and poles (`robust::curved::ssi`), the gap
+/// in turn.
+fn ssi(t: &mut [Tally], base: u64, i: u64) {
+    let gaps = Gap::all();
+    let gap = gaps[(i % gaps.len() as u64) as usize];
+    let s = seed_of(base ^ 0x551, i);
+    let label = || format!("ssi seam sphere-sphere gap {} seed {s}", gap.label());
+    t[0].run(label, || {
+        let o = curved::ssi::run(&curved::ssi::case(gap, s));
+        if o.certified_wrong {
+            Verdict::Wrong
+        } else if o.certified_undecided {
+            Verdict::Undecided
+        } else {
+            Verdict::Right
+        }
+    });
+}
+
 /// Case `i` of `families` (family, then gap, in turn) from the stream `stream`.
 fn curved_of(families: &[Family], stream: u64, t: &mut [Tally], i: u64) {
     let gaps = Gap::all();
@@ -233,6 +257,8 @@ fn main() {
     let lin = soak(Construction::ALL.len(), n_linear, threads, base, linear);
     let cur = soak(Family::ALL.len(), n_curved, threads, base, curved);
     let sea = soak(Family::SEAMS.len(), n_seams, threads, base, seams);
+    let n_ssi = env("GEOCERT_SOAK_SSI", 30);
+    let surf = soak(1, n_ssi, threads, base, ssi);
     println!(
         "geocert soak: seed {base}, {threads} thread(s), {:.1} s wall\n",
         start.elapsed().as_secs_f64()
@@ -246,6 +272,7 @@ fn main() {
     print(&names, &cur, &mut total);
     let names: Vec<&str> = Family::SEAMS.iter().map(|f| f.name()).collect();
     print(&names, &sea, &mut total);
+    print(&["ssi seam sphere-sphere"], &surf, &mut total);
     println!(
         "| **total** | {} | {:.1} | {} | {} | {} | {:.1} ms: {} |",
         total.cases,

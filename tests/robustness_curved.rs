@@ -95,6 +95,13 @@ fn on_shapes(c: &CurvedCase, p: &TruePoint) -> bool {
                 && small(sphere_residual(x, q, *rho), s)
                 && small(sphere_residual(x, cc, *r), s)
         }
+        Data::NurbsCircleSphere {
+            q, rho, c: cc, r, ..
+        } => {
+            small(Float::with_val(PREC, &x[1] - q[1]), s)
+                && small(sphere_residual(x, q, *rho), s)
+                && small(sphere_residual(x, cc, *r), s)
+        }
     }
 }
 
@@ -167,7 +174,7 @@ fn on_a_seam(c: &CurvedCase, p: &TruePoint) -> bool {
     let centres: Vec<&[f64]> = match &c.data {
         Data::Circles2 { c1, c2, .. } => vec![c1, c2],
         Data::LineSphere { c, .. } | Data::LineTorus { c, .. } => vec![c],
-        Data::CircleSphere { c, .. } => vec![c],
+        Data::CircleSphere { c, .. } | Data::NurbsCircleSphere { c, .. } => vec![c],
         Data::CircleEllipse2 { .. } => vec![],
     };
     let tiny = Float::with_val(PREC, 2f64.powi(-200));
@@ -212,18 +219,153 @@ fn the_seam_and_pole_families_put_their_points_on_seams() {
 #[test]
 fn the_certified_path_is_never_wrong_at_seams_and_poles() {
     use geocert::robust::curved::paths::run;
-    let mut undecided = 0;
+    let (mut undecided, mut nurbs_undecided) = (0, 0);
     for family in Family::SEAMS {
         for gap in Gap::all() {
             for seed in 0..4u64 {
                 let c = case(family, gap, seed * 104_729 + 11);
                 let o = run(&c);
                 assert!(!o.certified_wrong, "{c:?}: {o:?}");
-                undecided += usize::from(o.certified_undecided);
+                if family == Family::PoleNurbsCircleSphere {
+                    nurbs_undecided += usize::from(o.certified_undecided);
+                } else {
+                    undecided += usize::from(o.certified_undecided);
+                }
             }
         }
     }
     // All decided when written (the soak's seeds too); a change that leaves one
-    // undecided is not wrong, but should be looked at.
+    // undecided is not wrong, but should be looked at. The NURBS circle touching a
+    // sphere at a pole goes through the numeric certifier, which spends its box budget
+    // there (7 % of the soak's cases; issue 14, poles): most are decided.
     assert_eq!(undecided, 0);
+    assert!(nurbs_undecided <= 10, "{nurbs_undecided} of 60");
+}
+
+/// The NURBS circle of the pole family is exactly its circle: each of its four
+/// rational quadratic arcs, evaluated in exact rationals at five parameters (so its
+/// conic is the circle's: five common points), lies in the plane `y = q_y` at distance
+/// `rho` from `q`; the arcs join end to end and the last ends where the first begins.
+#[test]
+fn the_nurbs_circles_are_exactly_their_circles() {
+    use geocert::robust::case::q as rat;
+    use geocert::robust::curved::seams::{nurbs_circle, NURBS_CIRCLE_KNOTS};
+    use rug::Rational;
+    assert_eq!(NURBS_CIRCLE_KNOTS.len(), 9 + 3);
+    let mut cases = 0;
+    for gap in Gap::all() {
+        for seed in 0..40u64 {
+            let c = case(Family::PoleNurbsCircleSphere, gap, seed * 31 + 1);
+            let Data::NurbsCircleSphere { q, start, rho, .. } = c.data else {
+                panic!("{c:?}")
+            };
+            let (points, weights) = nurbs_circle(&q, rho, start);
+            assert_eq!(points.len(), 9);
+            assert_eq!(points[0], points[8], "{c:?}");
+            let rho2 = rat(rho) * rat(rho);
+            for arc in 0..4 {
+                for k in 0..=4 {
+                    let t = Rational::from((k, 4));
+                    let s = Rational::from(1 - &t);
+                    let b = [
+                        Rational::from(&s * &s),
+                        2 * Rational::from(&s * &t),
+                        Rational::from(&t * &t),
+                    ];
+                    let mut num = [Rational::new(), Rational::new(), Rational::new()];
+                    let mut den = Rational::new();
+                    for i in 0..3 {
+                        let bw = &b[i] * rat(weights[2 * arc + i]);
+                        for (n, x) in num.iter_mut().zip(points[2 * arc + i]) {
+                            *n += &bw * rat(x);
+                        }
+                        den += bw;
+                    }
+                    let x: Vec<Rational> = num.iter().map(|n| Rational::from(n / &den)).collect();
+                    assert_eq!(x[1], rat(q[1]), "{c:?} arc {arc} t {t}");
+                    let d2: Rational = (0..3)
+                        .map(|i| {
+                            let d = &x[i] - rat(q[i]);
+                            Rational::from(&d * &d)
+                        })
+                        .sum();
+                    assert_eq!(d2, rho2, "{c:?} arc {arc} t {t}");
+                }
+            }
+            cases += 1;
+        }
+    }
+    assert_eq!(cases, 40 * Gap::all().len());
+}
+
+/// The soak's first runs of the NURBS pole family: 19 of 200 cases reported a root on
+/// the sphere's seam twice, at `u = 0` and at `u = 2π`, under `complete` (the f64
+/// Krawczyk step that proves two boxes one root could not absorb the rounding of
+/// coordinates ~12 around a circle of radius 0.01: now retried in MPFR,
+/// `ops::certified::seam`); 5 of 2000 (gap 1e-13, near a pole, on the re-poled chart)
+/// reported one root twice in two overlapping boxes, neither inside the other (now
+/// proven one root by the same step with no shift). Each is now graded right: one box
+/// per root.
+#[test]
+fn seam_copies_of_nurbs_roots_are_merged() {
+    use geocert::robust::curved::paths::run;
+    let cases: [(Gap, u64); 24] = [
+        (Gap::Pow(13), 17989168351094150835),
+        (Gap::Pow(13), 321638165372927327),
+        (Gap::Pow(13), 2675845178122629730),
+        (Gap::Pow(13), 3454362131990628106),
+        (Gap::Pow(13), 18025339290331058772),
+        (Gap::Pow(6), 1563716787258903655),
+        (Gap::Pow(9), 17872784330540610676),
+        (Gap::Pow(15), 727625115803955241),
+        (Gap::Pow(8), 9187031078814708782),
+        (Gap::Pow(13), 1729849171728707488),
+        (Gap::Ulp, 18267763662831674501),
+        (Gap::Pow(14), 878338855627686265),
+        (Gap::Pow(6), 1060430943369537460),
+        (Gap::Pow(3), 15296310815876367826),
+        (Gap::Ulp, 6340329515716401675),
+        (Gap::Pow(9), 15204328210275600662),
+        (Gap::Pow(11), 2975613731386703320),
+        (Gap::Pow(7), 15928165615112736395),
+        (Gap::Pow(9), 5948620557442944583),
+        (Gap::Pow(10), 12365892806858287200),
+        (Gap::Pow(13), 4372761561409714858),
+        (Gap::Pow(12), 12557064836077103221),
+        (Gap::Pow(13), 3329527391710511594),
+        (Gap::Pow(12), 1448512625304892860),
+    ];
+    for (gap, seed) in cases {
+        let c = case(Family::PoleNurbsCircleSphere, gap, seed);
+        let o = run(&c);
+        assert!(!o.certified_wrong, "{c:?}: {o:?}");
+    }
+}
+
+/// Two spheres meeting across the first one's seam and pole (`robust::curved::ssi`):
+/// never a wrong certificate at any gap, all three topologies met, nearly all decided.
+#[test]
+fn sphere_pairs_across_seams_and_poles_are_never_wrong() {
+    use geocert::robust::curved::ssi;
+    use std::cmp::Ordering;
+    let (mut kinds, mut undecided, mut n) = ([0usize; 3], 0, 0);
+    for gap in Gap::all() {
+        // More seeds at gap 0: a third of them touch.
+        let seeds = if gap == Gap::Tangent { 30 } else { 8 };
+        for seed in 0..seeds {
+            let c = ssi::case(gap, seed * 7_919 + 13);
+            let t = ssi::truth(&c);
+            kinds[match t.kind() {
+                Ordering::Less => 0,
+                Ordering::Equal => 1,
+                Ordering::Greater => 2,
+            }] += 1;
+            let o = ssi::run(&c);
+            assert!(!o.certified_wrong, "{c:?}: {o:?}");
+            undecided += usize::from(o.certified_undecided);
+            n += 1;
+        }
+    }
+    assert!(kinds.iter().all(|&k| k >= 5), "{kinds:?}");
+    assert!(undecided * 20 <= n, "{undecided} of {n} undecided");
 }

@@ -248,7 +248,7 @@ pub(crate) fn find_roots<S: System>(
             }
         }
     }
-    seam::drop_seam_copies(sys, &mut roots, unknowns);
+    seam::drop_copies(sys, &mut roots, unknowns);
     Ok(Found {
         roots,
         undecided,

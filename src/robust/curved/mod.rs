@@ -14,6 +14,7 @@
 pub mod gen;
 pub mod paths;
 pub mod seams;
+pub mod ssi;
 pub mod table;
 pub mod truth;
 
@@ -71,6 +72,10 @@ pub enum Family {
     PoleCircleSphere,
     /// A line crossing a torus on its seams, or tangent to it on the seam.
     SeamLineTorus,
+    /// [`Family::PoleCircleSphere`] with the circle as an exact rational NURBS
+    /// ([`seams::nurbs_circle`]) whose closing knot is often on a pole or at the
+    /// touching point; the sphere moved or resized by the gap.
+    PoleNurbsCircleSphere,
 }
 
 impl Family {
@@ -83,13 +88,14 @@ impl Family {
     ];
 
     /// The seam and pole families ([`seams`]; not in the benchmark table).
-    pub const SEAMS: [Family; 6] = [
+    pub const SEAMS: [Family; 7] = [
         Family::SeamCircles2,
         Family::SeamTangent2,
         Family::SeamLineSphere,
         Family::PoleLineSphere,
         Family::PoleCircleSphere,
         Family::SeamLineTorus,
+        Family::PoleNurbsCircleSphere,
     ];
 
     /// The name in the table, the JSON and the plots' legends.
@@ -106,6 +112,7 @@ impl Family {
             Family::PoleLineSphere => "pole line-sphere",
             Family::PoleCircleSphere => "pole circle-sphere",
             Family::SeamLineTorus => "seam line-torus",
+            Family::PoleNurbsCircleSphere => "pole nurbs circle-sphere",
         }
     }
 }
@@ -193,6 +200,16 @@ pub enum Data {
         c: [f64; 3],
         r: f64,
     },
+    /// The circle of radius `rho` about `q` in the plane `y = q_y`, as the NURBS of
+    /// [`seams::nurbs_circle`] starting in the direction `start` (`(p, s, h)`: `(p,
+    /// s)/h` in the `(x, z)` plane), and the sphere `|x − c| = r`.
+    NurbsCircleSphere {
+        q: [f64; 3],
+        start: [i64; 3],
+        rho: f64,
+        c: [f64; 3],
+        r: f64,
+    },
 }
 
 /// One generated case.
@@ -214,7 +231,9 @@ impl CurvedCase {
             Data::LineTorus { major, minor, .. } => major + minor,
             Data::Circles2 { r1, r2, .. } => r1.max(r2),
             Data::CircleEllipse2 { rho, a, .. } => rho.max(a),
-            Data::CircleSphere { rho, r, .. } => rho.max(r),
+            Data::CircleSphere { rho, r, .. } | Data::NurbsCircleSphere { rho, r, .. } => {
+                rho.max(r)
+            }
         }
     }
 }

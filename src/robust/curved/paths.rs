@@ -11,7 +11,9 @@ use std::f64::consts::PI;
 use super::truth::{truth, Truth, PREC};
 use super::{CurvedCase, Data};
 use crate::certificate::{Arithmetic, Status};
-use crate::curve::{Analytic, Analytic2, AnyCurve2, AnyCurve3, Curve, Frame, Shape as Conic};
+use crate::curve::{
+    Analytic, Analytic2, AnyCurve2, AnyCurve3, Curve, Frame, NurbsCurve, Shape as Conic,
+};
 use crate::error::GeomError;
 use crate::geom::Line as KernelLine;
 use crate::ops::float::Precision;
@@ -77,7 +79,7 @@ pub fn run(case: &CurvedCase) -> Outcome {
             out.arithmetic = Some(c.arithmetic);
             out.bits = c.bits;
             out.certified_undecided = c.status == Status::Undecided || !c.complete;
-            out.certified_wrong = !holds(&c, &truth, case.scale());
+            out.certified_wrong = !holds(&c, &truth, &case.data, case.scale());
         }
         Err(_) => out.certified_undecided = true,
     }
@@ -122,7 +124,7 @@ fn inside(b: &[[f64; 2]], t: &[Float], slack: f64) -> bool {
 }
 
 /// Whether the certified answer's claims hold for the truth (see [`Outcome`]).
-fn holds(c: &crate::Certified<Answer>, truth: &Truth, scale: f64) -> bool {
+fn holds(c: &crate::Certified<Answer>, truth: &Truth, data: &Data, scale: f64) -> bool {
     if c.status == Status::Undecided {
         return true;
     }
@@ -151,6 +153,17 @@ fn holds(c: &crate::Certified<Answer>, truth: &Truth, scale: f64) -> bool {
         }
     };
     if !points.iter().all(box_holds) {
+        return false;
+    }
+    // Each true point a box holds has its parameters in the point's parameter boxes.
+    let params_hold = |p: &crate::ops::Point| {
+        truth
+            .points
+            .iter()
+            .filter(|t| boxed(p, &t.xyz))
+            .all(|t| params_in(p, &t.xyz, data, scale))
+    };
+    if !points.iter().all(params_hold) {
         return false;
     }
     // Two simple boxes on one true point: a solution reported twice (a seam copy).
@@ -188,6 +201,84 @@ fn holds(c: &crate::Certified<Answer>, truth: &Truth, scale: f64) -> bool {
     }
 }
 
+/// The true parameters of the point `x` on each shape of `data`, in input order, at
+/// [`PREC`] bits, from closed forms of the parametrisations (not the solvers'):
+/// `None` where no closed form is used here (space circles and NURBS curves, whose
+/// parameters depend on their frames and knots) or where a parameter is undefined (the
+/// longitude at a sphere's pole); `Some(period)` marks an angle, compared modulo `2π`.
+fn true_params(data: &Data, x: &[Float]) -> Vec<Vec<Option<(Float, bool)>>> {
+    let sub = |a: &Float, b: f64| Float::with_val(PREC, a - b);
+    let atan2 = |y: Float, x: Float| Some((y.atan2(&x), true));
+    // `t` on `o + t·d`: `(x − o)·d / |d|²`.
+    let line_t = |o: &[f64], d: &[f64]| {
+        let mut num = Float::with_val(PREC, 0);
+        let mut den = Float::with_val(PREC, 0);
+        for i in 0..o.len() {
+            num += sub(&x[i], o[i]) * d[i];
+            den += Float::with_val(PREC, d[i] * d[i]);
+        }
+        vec![Some((num / den, false))]
+    };
+    let circle_t = |c: &[f64]| vec![atan2(sub(&x[1], c[1]), sub(&x[0], c[0]))];
+    // Sphere about +z, reference +x: u the longitude (undefined on the axis), v the
+    // latitude.
+    let sphere_uv = |c: &[f64]| {
+        let (dx, dy, dz) = (sub(&x[0], c[0]), sub(&x[1], c[1]), sub(&x[2], c[2]));
+        let rho = Float::with_val(PREC, dx.hypot_ref(&dy));
+        let on_axis = rho.is_zero();
+        let v = Some((dz.atan2(&rho), false));
+        let u = if on_axis { None } else { atan2(dy, dx) };
+        vec![u, v]
+    };
+    match data {
+        Data::LineSphere { o, d, c, .. } => vec![line_t(o, d), sphere_uv(c)],
+        Data::LineTorus { o, d, c, major, .. } => {
+            let (dx, dy, dz) = (sub(&x[0], c[0]), sub(&x[1], c[1]), sub(&x[2], c[2]));
+            let rho = Float::with_val(PREC, dx.hypot_ref(&dy));
+            let v = atan2(dz, rho - *major);
+            vec![line_t(o, d), vec![atan2(dy, dx), v]]
+        }
+        Data::Circles2 { c1, c2, .. } => vec![circle_t(c1), circle_t(c2)],
+        Data::CircleEllipse2 { c, e, a, b, .. } => {
+            let t = atan2(sub(&x[1], e[1]) / *b, sub(&x[0], e[0]) / *a);
+            vec![circle_t(c), vec![t]]
+        }
+        Data::CircleSphere { c, .. } | Data::NurbsCircleSphere { c, .. } => {
+            vec![vec![None], sphere_uv(c)]
+        }
+    }
+}
+
+/// Whether the parameter boxes of `p` hold the true parameters of the true point `x`
+/// (angles modulo `2π`: a box may sit at either copy of a seam), up to an absolute
+/// slack of `2⁻²⁵⁰` for angles and `2⁻²⁵⁰·max(scale, 1)` for line parameters — far
+/// above the 300-bit truth's error, far below any double's spacing here.
+fn params_in(p: &crate::ops::Point, x: &[Float], data: &Data, scale: f64) -> bool {
+    let Some(boxes) = &p.param_box else {
+        return true;
+    };
+    let truth = true_params(data, x);
+    let two_pi = Float::with_val(PREC, rug::float::Constant::Pi) * 2u32;
+    boxes.iter().zip(&truth).all(|(bs, ts)| {
+        bs.len() != ts.len()
+            || bs.iter().zip(ts).all(|(&[lo, hi], t)| {
+                let Some((t, angle)) = t else { return true };
+                let slack = if *angle {
+                    SLACK
+                } else {
+                    SLACK * scale.max(1.0)
+                };
+                let within = |y: &Float| {
+                    Float::with_val(PREC, lo - y) <= slack && Float::with_val(PREC, y - hi) <= slack
+                };
+                within(t)
+                    || (*angle
+                        && (within(&Float::with_val(PREC, t + &two_pi))
+                            || within(&Float::with_val(PREC, t - &two_pi))))
+            })
+    })
+}
+
 fn sphere(c: &[f64; 3], r: f64) -> Result<Sphere, GeomError> {
     Sphere::new(*c, r, None, None)
 }
@@ -200,6 +291,18 @@ fn circle3(q: &[f64; 3], n: &[f64; 3], rho: f64) -> Result<Analytic, GeomError> 
     Analytic::new(
         Frame::new(*q, *n, None)?,
         Conic::Circle { radius: rho },
+        None,
+    )
+}
+
+/// The exact NURBS circle of [`super::seams::nurbs_circle`].
+fn nurbs_circle(q: &[f64; 3], rho: f64, start: [i64; 3]) -> Result<NurbsCurve<3>, GeomError> {
+    let (points, weights) = super::seams::nurbs_circle(q, rho, start);
+    NurbsCurve::new(
+        2,
+        super::seams::NURBS_CIRCLE_KNOTS.to_vec(),
+        points,
+        Some(weights),
         None,
     )
 }
@@ -244,6 +347,13 @@ fn float_points(data: &Data) -> Result<Vec<Vec<f64>>, GeomError> {
         Data::CircleSphere { q, n, rho, c, r } => {
             curve_surface(&sphere(c, *r)?, &circle3(q, n, *rho)?, &p)
         }
+        Data::NurbsCircleSphere {
+            q,
+            start,
+            rho,
+            c,
+            r,
+        } => curve_surface(&sphere(c, *r)?, &nurbs_circle(q, *rho, *start)?, &p),
         Data::Circles2 { c1, r1, c2, r2 } => {
             let (a, b) = (circle2(c1, *r1)?, circle2(c2, *r2)?);
             let (sa, sb) = (walk(&a)?, walk(&b)?);
@@ -310,6 +420,16 @@ fn certified(data: &Data) -> Result<crate::Certified<Answer>, GeomError> {
         ],
         Data::CircleSphere { q, n, rho, c, r } => [
             AnyCurve3::Analytic(circle3(q, n, *rho)?).into(),
+            Shape::from(crate::surface::AnySurface::Sphere(sphere(c, *r)?)),
+        ],
+        Data::NurbsCircleSphere {
+            q,
+            start,
+            rho,
+            c,
+            r,
+        } => [
+            AnyCurve3::Nurbs(nurbs_circle(q, *rho, *start)?).into(),
             Shape::from(crate::surface::AnySurface::Sphere(sphere(c, *r)?)),
         ],
     };

@@ -14,7 +14,7 @@
 //! crossings, and how far from tangency for the tangencies (a radius perturbed, as in
 //! [`super::gen`]).
 
-use super::gen::{dy, perturb, point, PYTHAGOREAN};
+use super::gen::{dy, perturb, point, PYTHAGOREAN, UNIT};
 use super::{Data, Family, Gap};
 use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
@@ -57,6 +57,7 @@ pub fn data(family: Family, rng: &mut Rng, gap: Gap, side: i8) -> Data {
         Family::PoleLineSphere => pole_line_sphere(rng, gap, side),
         Family::PoleCircleSphere => pole_circle_sphere(rng, gap, side),
         Family::SeamLineTorus => seam_line_torus(rng, gap, side),
+        Family::PoleNurbsCircleSphere => pole_nurbs_circle_sphere(rng, gap, side),
         _ => unreachable!("not a seam family: {family:?}"),
     }
 }
@@ -240,5 +241,119 @@ fn seam_line_torus(rng: &mut Rng, gap: Gap, side: i8) -> Data {
             major,
             minor: perturb(minor, gap, side),
         },
+    }
+}
+
+/// The exact rational circle as a clamped NURBS of degree 2 in four arcs: angles `0 →
+/// 2φ → π → π + 2φ → 2π` with `tan φ = 3/4`, so every arc's half-angle has a rational
+/// cosine (`4/5` or `3/5`, the middle weights over end weights `5`) and every control
+/// point is rational. The points in the circle's own frame, times 300 (they are
+/// `(1, 0), (1, 3/4), (7/25, 24/25), (−1, 4/3), (−1, 0), …`), and the weights.
+const NURBS_CIRCLE: [([i64; 2], f64); 9] = [
+    ([300, 0], 5.0),
+    ([300, 225], 4.0),
+    ([84, 288], 5.0),
+    ([-300, 400], 3.0),
+    ([-300, 0], 5.0),
+    ([-300, -225], 4.0),
+    ([-84, -288], 5.0),
+    ([300, -400], 3.0),
+    ([300, 0], 5.0),
+];
+
+/// The knots of [`NURBS_CIRCLE`]: double at the arcs' joins, parameter `t ∈ [0, 4]`.
+pub const NURBS_CIRCLE_KNOTS: [f64; 12] = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
+
+/// The control points and weights of the NURBS circle of radius `rho` about `q` in the
+/// plane `y = q_y`, starting (`t = 0`, its closing knot) in the direction `(p, s)/h` of
+/// the `(x, z)` plane. Exact in doubles: `rho` is a multiple of `300·h` units (2⁻²⁰),
+/// so every offset is an integer number of units.
+pub fn nurbs_circle(q: &[f64; 3], rho: f64, start: [i64; 3]) -> (Vec<[f64; 3]>, Vec<f64>) {
+    let [p, s, h] = start;
+    let units = (rho / UNIT) as i64;
+    assert_eq!(units % (300 * h), 0, "rho is a multiple of 300·h units");
+    let k = units / (300 * h);
+    NURBS_CIRCLE
+        .iter()
+        .map(|&([a, b], w)| {
+            let (x, z) = (k * (p * a - s * b), k * (s * a + p * b));
+            ([q[0] + dy(x), q[1], q[2] + dy(z)], w)
+        })
+        .unzip()
+}
+
+/// A direction `(p, s, h)` of the `(x, z)` plane (`p² + s² = h²`): an axis or a random
+/// Pythagorean one.
+fn direction(rng: &mut Rng) -> [i64; 3] {
+    match rng.below(3) {
+        0 => [sign(rng), 0, 1],
+        1 => [0, sign(rng), 1],
+        _ => {
+            let (p, s, h) = triple(rng);
+            [sign(rng) * p, sign(rng) * s, h]
+        }
+    }
+}
+
+/// [`pole_circle_sphere`] with the circle as the NURBS of [`nurbs_circle`] — a rational
+/// curve through (or touching) the sphere's poles and seam meridian, its start knot
+/// (`t = 0 ≡ 4`, where the curve closes) often on a pole or at the touching point. So
+/// that the NURBS stays exact in doubles, the gap moves the sphere, not the circle: its
+/// centre off the circle's (crossings), or its radius (tangencies; `side` keeps its
+/// meaning, `+` crosses).
+fn pole_nurbs_circle_sphere(rng: &mut Rng, gap: Gap, side: i8) -> Data {
+    let mut c: [f64; 3] = point(rng);
+    if rng.coin() {
+        // Through both poles: (a, r, rho) = (p, s, h)·m, the start at a pole, on the
+        // seam plane's axis or anywhere.
+        let (p, s, h) = triple(rng);
+        let a = sign(rng) * p;
+        let pole = [-a, sign(rng) * s, h];
+        let start = if rng.coin() { pole } else { direction(rng) };
+        let m = 300 * start[2] * rng.int(1 << 2, 1 << 4);
+        let (r, rho) = (dy(s * m), dy(h * m));
+        let q = [c[0] + dy(a * m), c[1], c[2]];
+        let k = if rng.coin() { 0 } else { 1 };
+        c[k] = shift(c[k], gap, -side, r);
+        Data::NurbsCircleSphere {
+            q,
+            start,
+            rho,
+            c,
+            r,
+        }
+    } else {
+        // Touching at a pole or at the seam point of the equator, from outside or
+        // inside; the start at the touching point, on an axis or anywhere.
+        let start = direction(rng);
+        let krho = 300 * start[2] * rng.int(1, 8);
+        let kr = rng.int(1 << 18, 1 << 20);
+        let (r, rho) = (dy(kr), dy(krho));
+        let outside = rng.coin();
+        let reach = if outside { r + rho } else { r - rho };
+        let up = sign(rng);
+        let at_pole = rng.coin();
+        let (q, touch) = if at_pole {
+            ([c[0], c[1], c[2] + up as f64 * reach], [0, -up, 1])
+        } else {
+            ([c[0] + reach, c[1], c[2]], [-1, 0, 1])
+        };
+        let touch = if outside {
+            touch
+        } else {
+            [-touch[0], -touch[1], 1]
+        };
+        // `krho` is a multiple of `300·h` for both (the touching direction has h = 1).
+        let start = if rng.coin() { touch } else { start };
+        // A larger sphere crosses a circle touching it from outside, and clears one
+        // touching it from inside.
+        let side = if outside { side } else { -side };
+        Data::NurbsCircleSphere {
+            q,
+            start,
+            rho,
+            c,
+            r: perturb(r, gap, side),
+        }
     }
 }

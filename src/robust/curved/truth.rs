@@ -106,6 +106,9 @@ pub fn truth(case: &CurvedCase) -> Truth {
             c,
             r,
         } => circle_sphere(qc, n, *rho, c, *r),
+        Data::NurbsCircleSphere {
+            q: qc, rho, c, r, ..
+        } => circle_sphere(qc, &[0.0, 1.0, 0.0], *rho, c, *r),
     };
     Truth { points }
 }
