@@ -205,3 +205,65 @@ fn a_claimed_point_of_the_wrong_dimension_is_an_error_naming_it() {
     }
     assert_eq!(seen, 3 * 4 * 3);
 }
+
+/// A claimed arc of two coincident curves (issue 20: arc claims against `coincident`
+/// were left undecided): identical plane Béziers of random integer control points and
+/// a circle given twice. Ends on the curve (exact dyadic points `B(t)`, the circle's
+/// `(±r, 0)`, `(0, ±r)`) and ends moved by half the tolerance are confirmed; an end
+/// moved by twice the tolerance off the curve's side is never confirmed.
+#[test]
+fn arcs_of_coincident_curves_are_confirmed_when_their_ends_lie_on_them() {
+    let mut seed = 0x5eed_u64;
+    let mut next = |k: i64| {
+        seed = seed
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        ((seed >> 33) as i64 % (2 * k + 1)) - k
+    };
+    let tol = 1e-6;
+    let (mut confirmed, mut kept_out) = (0, 0);
+    for case in 0..40 {
+        let (objects, ends): (Value, Vec<[f64; 2]>) = if case % 4 == 3 {
+            let r = (1 + next(8).abs()) as f64;
+            let c = [next(5) as f64, next(5) as f64];
+            let circle = json!({"type": "circle2", "center": c, "radius": r});
+            let ends = vec![
+                [c[0] + r, c[1]],
+                [c[0], c[1] + r],
+                [c[0] - r, c[1]],
+                [c[0], c[1] - r],
+            ];
+            (json!([circle, circle]), ends)
+        } else {
+            let p: Vec<[f64; 2]> = (0..3).map(|_| [next(9) as f64, next(9) as f64]).collect();
+            let b = json!({"type": "bezier2", "points": p});
+            // B(t) at t = k/8 (exact dyadic).
+            let at = |t: f64| -> [f64; 2] {
+                let (s, w) = ((1.0 - t) * (1.0 - t), 2.0 * t * (1.0 - t));
+                std::array::from_fn(|i| s * p[0][i] + w * p[1][i] + t * t * p[2][i])
+            };
+            (json!([b, b]), (0..=8).map(|k| at(k as f64 / 8.0)).collect())
+        };
+        let n = ends.len();
+        let (a, b) = (ends[case % n], ends[(case + 1 + case / 4) % n]);
+        let claim = |a: [f64; 2], b: [f64; 2]| json!({"arc": {"a": {"xyz": a}, "b": {"xyz": b}}, "tolerance": tol});
+        let r = verify(json!({"op": "intersect", "objects": objects, "claim": claim(a, b)}));
+        assert_eq!(r["kind"], "coincident", "case {case}: {r}");
+        assert_eq!(r["claims"][0]["verdict"], "confirmed", "case {case}: {r}");
+        // Half the tolerance off, along x: still within it.
+        let half = [a[0] + 0.5 * tol, a[1]];
+        let r = verify(json!({"op": "intersect", "objects": objects, "claim": claim(half, b)}));
+        assert_eq!(r["claims"][0]["verdict"], "confirmed", "case {case}: {r}");
+        confirmed += 2;
+        // Far off (the first control point's side moved by 1): never confirmed.
+        let far = [a[0] + 1.0, a[1] + 1.0];
+        let r = verify(json!({"op": "intersect", "objects": objects, "claim": claim(a, far)}));
+        let near_far = r["claims"][0]["verdict"] == "confirmed";
+        if !near_far {
+            kept_out += 1;
+        }
+    }
+    assert_eq!(confirmed, 80);
+    // A far end may happen to lie on the curve (a Bézier through it): rare.
+    assert!(kept_out >= 36, "{kept_out}");
+}

@@ -13,6 +13,10 @@
 //!   or `empty`: finitely many common points), or is an `arc` from which a claimed end
 //!   is proven beyond the tolerance — every box of a cover of the true arc
 //!   ([`off_arc`]) lies beyond it.
+//! - **confirmed** also when the answer is `coincident` (every arc of one curve is
+//!   shared) and each claimed end is proven within the tolerance of the curve: a
+//!   certified projection of the end (an exact point) has a proven foot within it.
+//!   (An end away from coincident curves is not refuted: left undecided.)
 //! - **undecided** otherwise, with the reason.
 
 use rug::Rational;
@@ -116,6 +120,20 @@ pub(super) fn arc_verdict(
                 verdict(Verdict::Undecided, status, Some(nearest), Some(why.into()))
             }
         }
+        Answer::Coincident => {
+            // Every arc of one curve is shared: the claim holds when both ends are
+            // proven within the tolerance of the curve.
+            let on: Vec<Option<f64>> = placed.iter().map(|r| near_curve(shapes, r, tol2)).collect();
+            if let [Some(a), Some(b)] = on[..] {
+                let why = "the curves coincide, and both claimed ends are proven within the \
+                           tolerance of them (each by a certified point of the curve)";
+                verdict(Verdict::Confirmed, status, Some(a.max(b)), Some(why.into()))
+            } else {
+                let why = "the curves coincide, but a claimed end is not proven within the \
+                           tolerance of them";
+                verdict(Verdict::Undecided, status, None, Some(why.into()))
+            }
+        }
         Answer::Points(_) | Answer::Empty if truth.complete => {
             let why = format!("the curves share no arc: the answer is `{kind}`");
             verdict(Verdict::Refuted, status, None, Some(why))
@@ -130,6 +148,62 @@ pub(super) fn arc_verdict(
         }
     };
     (out, regions)
+}
+
+/// Whether a claimed end (its regions: each a single exact point, or nothing is
+/// proven) lies within the tolerance of the first curve: each region's point is
+/// projected onto it (the certified projection, every foot: any proven foot is a point
+/// of the curve, and the nearest-only search may leave a tie at distance 0 undecided),
+/// and some proven foot or an end of the curve ([`curve_ends`]) must be within the
+/// tolerance of it. Returns the largest such distance.
+fn near_curve(shapes: &[Shape], claim: &[Region], tol2: &Rational) -> Option<f64> {
+    let curve = shapes.first()?;
+    let how = crate::ops::ProjectOptions {
+        nearest: false,
+        direction: None,
+        options: crate::ops::Options::default(),
+    };
+    let mut worst = 0.0f64;
+    for region in claim {
+        if region.max_distance2(region)? != 0 {
+            return None; // a box: the projection takes a point
+        }
+        let at = crate::ops::Position::Exact(region.center());
+        let feet = crate::ops::project(&at, curve, &how).ok()?;
+        let proven = feet
+            .value
+            .points()
+            .iter()
+            .filter(|p| super::exists(feet.status, p))
+            .map(super::truth_region)
+            .collect::<Vec<_>>();
+        let foot = proven
+            .into_iter()
+            .chain(curve_ends(curve))
+            .find(|t| relation(std::slice::from_ref(region), t, tol2) == Relation::Within)
+            .map(|t| distance(std::slice::from_ref(region), &t))?;
+        worst = worst.max(foot);
+    }
+    Some(worst)
+}
+
+/// Enclosures of the curve's two domain ends (points of the curve that are no foot
+/// when the perpendicular from a point near an end falls outside the domain): the
+/// curve evaluated in intervals at each end parameter.
+fn curve_ends(shape: &Shape) -> Vec<Region> {
+    let ends = |(lo, hi): (f64, f64), at: &dyn Fn(&Interval) -> Vec<Interval>| {
+        [lo, hi]
+            .iter()
+            .map(|&t| at(&Interval::point(t)))
+            .filter(|v| v.iter().all(|x| !x.is_empty() && x.is_bounded()))
+            .map(|v| Region::from_bounds(&v.iter().map(|x| [x.lo(), x.hi()]).collect::<Vec<_>>()))
+            .collect()
+    };
+    match shape {
+        Shape::Curve(c) => ends(c.domain(), &|t| c.point(t).to_vec()),
+        Shape::Curve2(c) => ends(c.domain(), &|t| c.point(t).to_vec()),
+        _ => vec![],
+    }
 }
 
 /// The claimed ends as regions, or why one cannot be placed.
