@@ -161,14 +161,7 @@ fn ssi(t: &mut [Tally], base: u64, i: u64) {
     let s = seed_of(base ^ 0x551, i);
     let label = || format!("ssi seam sphere-sphere gap {} seed {s}", gap.label());
     t[0].run(label, || {
-        let o = curved::ssi::run(&curved::ssi::case(gap, s));
-        if o.certified_wrong {
-            Verdict::Wrong
-        } else if o.certified_undecided {
-            Verdict::Undecided
-        } else {
-            Verdict::Right
-        }
+        grade(curved::ssi::run(&curved::ssi::case(gap, s)))
     });
 }
 
@@ -180,12 +173,13 @@ fn curved_of(families: &[Family], stream: u64, t: &mut [Tally], i: u64) {
     let gap = gaps[((i / nf) % gaps.len() as u64) as usize];
     let s = seed_of(stream, i);
     let label = || format!("curved {} gap {} seed {s}", f.name(), gap.label());
-    t[(i % nf) as usize].run(label, || grade(&curved::case(f, gap, s)));
+    t[(i % nf) as usize].run(label, || {
+        grade(curved::paths::run(&curved::case(f, gap, s)))
+    });
 }
 
-/// A curved case against its truth.
-fn grade(case: &curved::CurvedCase) -> Verdict {
-    let o = curved::paths::run(case);
+/// A curved case's grade against its truth.
+fn grade(o: curved::paths::Outcome) -> Verdict {
     if o.certified_wrong {
         Verdict::Wrong
     } else if o.certified_undecided {

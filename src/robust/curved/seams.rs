@@ -19,7 +19,7 @@ use super::{Data, Family, Gap};
 use crate::num::rng::Rng;
 use crate::num::round::{next_down, next_up};
 
-fn sign(rng: &mut Rng) -> i64 {
+pub(super) fn sign(rng: &mut Rng) -> i64 {
     if rng.coin() {
         1
     } else {
@@ -39,7 +39,7 @@ fn triple(rng: &mut Rng) -> (i64, i64, i64) {
 
 /// `x` moved off the seam or pole: by nothing, one ulp, or `10⁻ᵏ·size` (rounded), to
 /// `side`.
-fn shift(x: f64, gap: Gap, side: i8, size: f64) -> f64 {
+pub(super) fn shift(x: f64, gap: Gap, side: i8, size: f64) -> f64 {
     match gap {
         Gap::Tangent => x,
         Gap::Ulp if side > 0 => next_up(x),

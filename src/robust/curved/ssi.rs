@@ -20,13 +20,12 @@
 use rug::{Float, Rational};
 use std::cmp::Ordering;
 
-use super::gen::{dy, point, start, PYTHAGOREAN};
+use super::gen::{dy, perturb, point, start, PYTHAGOREAN};
 use super::paths::Outcome;
+use super::seams::{shift, sign};
 use super::truth::PREC;
 use super::Gap;
 use crate::certificate::Status;
-use crate::num::rng::Rng;
-use crate::num::round::{next_down, next_up};
 use crate::ops::answer::{CurveAnswer, CurvesAnswer};
 use crate::ops::{intersect, Answer, Options, Shape};
 use crate::robust::case::q;
@@ -44,23 +43,6 @@ pub struct SsiCase {
     pub ra: f64,
     pub b: [f64; 3],
     pub rb: f64,
-}
-
-fn sign(rng: &mut Rng) -> i64 {
-    if rng.coin() {
-        1
-    } else {
-        -1
-    }
-}
-
-fn moved(x: f64, gap: Gap, side: i8, size: f64) -> f64 {
-    match gap {
-        Gap::Tangent => x,
-        Gap::Ulp if side > 0 => next_up(x),
-        Gap::Ulp => next_down(x),
-        Gap::Pow(k) => x + f64::from(side) * 10f64.powi(-k) * size,
-    }
 }
 
 /// Case `seed` at `gap`. Three shapes, chosen at random:
@@ -89,7 +71,7 @@ pub fn case(gap: Gap, seed: u64) -> SsiCase {
                 a[2] + ra + dy(sign(rng) * s * m),
             ];
             let k = rng.below(2);
-            b[k] = moved(b[k], gap, side, ra);
+            b[k] = shift(b[k], gap, side, ra);
             SsiCase {
                 gap,
                 side,
@@ -111,7 +93,7 @@ pub fn case(gap: Gap, seed: u64) -> SsiCase {
                 1 => hi - 1 - rng.int(0, 64),
                 _ => rng.int(lo + 1, hi - 1),
             };
-            let z = moved(a[2] + dy(sign(rng) * e), gap, side, ra);
+            let z = shift(a[2] + dy(sign(rng) * e), gap, side, ra);
             SsiCase {
                 gap,
                 side,
@@ -136,12 +118,7 @@ pub fn case(gap: Gap, seed: u64) -> SsiCase {
             // A larger second sphere cuts the first when it touches from outside; a
             // smaller one when it touches from inside.
             let grow = if outside { side } else { -side };
-            let rb = match gap {
-                Gap::Tangent => rb,
-                Gap::Ulp if grow > 0 => next_up(rb),
-                Gap::Ulp => next_down(rb),
-                Gap::Pow(k) => rb * (1.0 + f64::from(grow) * 10f64.powi(-k)),
-            };
+            let rb = perturb(rb, gap, grow);
             SsiCase {
                 gap,
                 side,
