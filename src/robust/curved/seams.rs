@@ -261,7 +261,7 @@ const NURBS_CIRCLE: [([i64; 2], f64); 9] = [
     ([300, 0], 5.0),
 ];
 
-/// The knots of [`NURBS_CIRCLE`]: double at the arcs' joins, parameter `t ∈ [0, 4]`.
+/// The knots of the NURBS circle of [`nurbs_circle`]: double at the arcs' joins, parameter `t ∈ [0, 4]`.
 pub const NURBS_CIRCLE_KNOTS: [f64; 12] = [0., 0., 0., 1., 1., 2., 2., 3., 3., 4., 4., 4.];
 
 /// The control points and weights of the NURBS circle of radius `rho` about `q` in the
