@@ -123,10 +123,17 @@ pub(super) fn arc_verdict(
         Answer::Coincident => {
             // Every arc of one curve is shared: the claim holds when both ends are
             // proven within the tolerance of the curve.
-            let on: Vec<Option<f64>> = placed.iter().map(|r| near_curve(shapes, r, tol2)).collect();
-            if let [Some(a), Some(b)] = on[..] {
+            let on: Vec<Option<(f64, bool)>> =
+                placed.iter().map(|r| near_curve(shapes, r, tol2)).collect();
+            if let [Some((a, ea)), Some((b, eb))] = on[..] {
                 let why = "the curves coincide, and both claimed ends are proven within the \
                            tolerance of them (each by a certified point of the curve)";
+                // No stronger than the weakest proof used (the answer's, the feet's).
+                let status = if status == Status::Exact && ea && eb {
+                    Status::Exact
+                } else {
+                    Status::Verified
+                };
                 verdict(Verdict::Confirmed, status, Some(a.max(b)), Some(why.into()))
             } else {
                 let why = "the curves coincide, but a claimed end is not proven within the \
@@ -155,41 +162,46 @@ pub(super) fn arc_verdict(
 /// projected onto it (the certified projection, every foot: any proven foot is a point
 /// of the curve, and the nearest-only search may leave a tie at distance 0 undecided),
 /// and some proven foot or an end of the curve ([`curve_ends`]) must be within the
-/// tolerance of it. Returns the largest such distance.
-fn near_curve(shapes: &[Shape], claim: &[Region], tol2: &Rational) -> Option<f64> {
+/// tolerance of it. Returns the largest such distance, and whether every proof used was
+/// exact (an exact foot; an end's interval enclosure is not).
+fn near_curve(shapes: &[Shape], claim: &[Region], tol2: &Rational) -> Option<(f64, bool)> {
     let curve = shapes.first()?;
     let how = crate::ops::ProjectOptions {
         nearest: false,
         direction: None,
         options: crate::ops::Options::default(),
     };
-    let mut worst = 0.0f64;
+    let (mut worst, mut exact) = (0.0f64, true);
     for region in claim {
         if region.max_distance2(region)? != 0 {
             return None; // a box: the projection takes a point
         }
         let at = crate::ops::Position::Exact(region.center());
         let feet = crate::ops::project(&at, curve, &how).ok()?;
+        let foot_exact = feet.status == Status::Exact;
         let proven = feet
             .value
             .points()
             .iter()
             .filter(|p| super::exists(feet.status, p))
-            .map(super::truth_region)
+            .map(|p| (super::truth_region(p), foot_exact))
             .collect::<Vec<_>>();
-        let foot = proven
+        let ends = curve_ends(curve).into_iter().map(|r| (r, false));
+        let (foot, how_exact) = proven
             .into_iter()
-            .chain(curve_ends(curve))
-            .find(|t| relation(std::slice::from_ref(region), t, tol2) == Relation::Within)
-            .map(|t| distance(std::slice::from_ref(region), &t))?;
+            .chain(ends)
+            .find(|(t, _)| relation(std::slice::from_ref(region), t, tol2) == Relation::Within)
+            .map(|(t, e)| (distance(std::slice::from_ref(region), &t), e))?;
         worst = worst.max(foot);
+        exact &= how_exact;
     }
-    Some(worst)
+    Some((worst, exact))
 }
 
 /// Enclosures of the curve's two domain ends (points of the curve that are no foot
 /// when the perpendicular from a point near an end falls outside the domain): the
-/// curve evaluated in intervals at each end parameter.
+/// curve evaluated in intervals at each end parameter; none when the domain's ends are
+/// rounded.
 fn curve_ends(shape: &Shape) -> Vec<Region> {
     let ends = |(lo, hi): (f64, f64), at: &dyn Fn(&Interval) -> Vec<Interval>| {
         [lo, hi]
@@ -199,9 +211,11 @@ fn curve_ends(shape: &Shape) -> Vec<Region> {
             .map(|v| Region::from_bounds(&v.iter().map(|x| [x.lo(), x.hi()]).collect::<Vec<_>>()))
             .collect()
     };
+    // A rounded domain end (an angle) may lie just outside the true domain: its point
+    // would be the continuation's, not the curve's.
     match shape {
-        Shape::Curve(c) => ends(c.domain(), &|t| c.point(t).to_vec()),
-        Shape::Curve2(c) => ends(c.domain(), &|t| c.point(t).to_vec()),
+        Shape::Curve(c) if !c.domain_rounded() => ends(c.domain(), &|t| c.point(t).to_vec()),
+        Shape::Curve2(c) if !c.domain_rounded() => ends(c.domain(), &|t| c.point(t).to_vec()),
         _ => vec![],
     }
 }
