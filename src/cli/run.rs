@@ -6,8 +6,11 @@
 //!   depends on its case only; `micros` is left out unless `--timings`).
 //! - Cases go to the pool in batches of consecutive cases, sized from the measured
 //!   time per case so that a batch is about [`BATCH_NANOS`] of work: one case at a
-//!   time when cases are slow, up to [`MAX_BATCH`] when they are fast.
-//! - Memory stays flat: at most [`WINDOW`] batches are between the reader and the
+//!   time when cases are slow, up to [`MAX_BATCH`] when they are fast. A batch never
+//!   waits more than [`BATCH_WAIT`] for cases that have not arrived: input that comes
+//!   slowly (a pipe held open) is answered case by case as it comes.
+//! - Memory stays flat: at most [`MAX_BATCH`] cases wait between the reading thread
+//!   and the batcher, and at most [`WINDOW`] batches between the batcher and the
 //!   writer (read, being solved, or solved and waiting for an earlier one).
 //! - A result is written as soon as its batch and all before it are done; standard
 //!   output is flushed whenever the writer would wait, so a run stopped by a timeout
@@ -116,6 +119,84 @@ fn report_counts(command: &str, status: Status) {
     }
 }
 
+/// How long a batch waits for more cases once it has one: input that arrives slowly
+/// (a pipe held open, an interactive session) is solved without waiting for more.
+const BATCH_WAIT: Duration = Duration::from_millis(1);
+
+/// What the reader thread hands to the batcher: a case, or the end of the input (with
+/// the read error that ended it, if any).
+enum Read {
+    Chunk(Chunk),
+    End(Option<std::io::Error>),
+}
+
+/// Read chunks on a thread of their own, so that the batcher can tell "no case ready
+/// now" from "no case yet": a bounded channel keeps memory flat. The thread is not
+/// joined: when the run stops early (a write error) it may be blocked on standard
+/// input, and it ends with the process.
+fn spawn_reader(input: Box<dyn BufRead + Send>) -> Receiver<Read> {
+    let (tx, rx) = mpsc::sync_channel::<Read>(MAX_BATCH);
+    std::thread::spawn(move || {
+        let mut stream = CaseStream::new(input);
+        loop {
+            let read = match stream.next_chunk() {
+                Ok(Some(chunk)) => Read::Chunk(chunk),
+                Ok(None) => Read::End(None),
+                Err(e) => Read::End(Some(e)),
+            };
+            let end = matches!(read, Read::End(_));
+            if tx.send(read).is_err() || end {
+                break;
+            }
+        }
+    });
+    rx
+}
+
+/// The next batch: up to `size` chunks, waiting for the first as long as it takes and
+/// for the others at most [`BATCH_WAIT`] after the first; `ended` is set at the end of
+/// the input.
+fn next_batch(
+    chunks: &Receiver<Read>,
+    size: usize,
+    ended: &mut Option<Option<std::io::Error>>,
+) -> Vec<Chunk> {
+    let mut batch: Vec<Chunk> = Vec::with_capacity(size);
+    let mut deadline: Option<Instant> = None;
+    while batch.len() < size {
+        let read = match deadline {
+            None => chunks.recv().ok(),
+            Some(deadline) => match chunks.try_recv() {
+                Ok(read) => Some(read),
+                Err(TryRecvError::Disconnected) => None,
+                Err(TryRecvError::Empty) => {
+                    match chunks.recv_timeout(deadline.saturating_duration_since(Instant::now())) {
+                        Ok(read) => Some(read),
+                        Err(RecvTimeoutError::Timeout) => return batch,
+                        Err(RecvTimeoutError::Disconnected) => None,
+                    }
+                }
+            },
+        };
+        match read {
+            Some(Read::Chunk(chunk)) => {
+                batch.push(chunk);
+                deadline.get_or_insert_with(|| Instant::now() + BATCH_WAIT);
+            }
+            Some(Read::End(e)) => {
+                *ended = Some(e);
+                break;
+            }
+            // The reader went away without a word (it panicked): end of input.
+            None => {
+                *ended = Some(None);
+                break;
+            }
+        }
+    }
+    batch
+}
+
 /// Read the cases and hand them to the pool in batches; the read error that ended
 /// the input.
 fn feed(
@@ -126,7 +207,7 @@ fn feed(
     slot_tx: SyncSender<()>,
     stop: &AtomicBool,
 ) -> Option<std::io::Error> {
-    let mut stream = CaseStream::new(input);
+    let chunks = spawn_reader(input);
     // The measured time per case (nanoseconds, a running average over batches).
     let per_case = Arc::new(AtomicU64::new(BATCH_NANOS));
     let mut index = 0u64;
@@ -134,20 +215,7 @@ fn feed(
     while ended.is_none() && !stop.load(Ordering::Relaxed) {
         let size =
             (BATCH_NANOS / per_case.load(Ordering::Relaxed).max(1)).clamp(1, MAX_BATCH as u64);
-        let mut batch: Vec<Chunk> = Vec::with_capacity(size as usize);
-        while batch.len() < size as usize {
-            match stream.next_chunk() {
-                Ok(Some(chunk)) => batch.push(chunk),
-                Ok(None) => {
-                    ended = Some(None);
-                    break;
-                }
-                Err(e) => {
-                    ended = Some(Some(e));
-                    break;
-                }
-            }
-        }
+        let batch = next_batch(&chunks, size as usize, &mut ended);
         if batch.is_empty() {
             break;
         }

@@ -24,6 +24,8 @@ mod cli_rays;
 mod cli_run;
 #[path = "../cli_solve.rs"]
 mod cli_solve;
+#[path = "../cli_stream.rs"]
+mod cli_stream;
 #[path = "../cli_surface_surface.rs"]
 mod cli_surface_surface;
 #[path = "../cli_verify.rs"]
