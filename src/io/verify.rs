@@ -123,6 +123,11 @@ pub fn verify_case(read: ReadCase) -> CaseResult {
     };
     let keep_exact = case.options.exact;
     case.options.exact = true;
+    // The checks' budget: the case's, its time limit counted from here.
+    let budget = match super::solve::options(&case) {
+        Ok(o) => o.started(),
+        Err(e) => return CaseResult::error(case.id.clone(), &e),
+    };
     let solved = answer(&case).and_then(|truth| objects(&case).map(|shapes| (shapes, truth)));
     let (shapes, mut truth) = match solved {
         Ok(t) => t,
@@ -131,7 +136,7 @@ pub fn verify_case(read: ReadCase) -> CaseResult {
     if let Err(e) = dimensions(&claim, &shapes) {
         return CaseResult::error(case.id.clone(), &e);
     }
-    let checked = verify(&truth, &shapes, &claim);
+    let checked = verify(&truth, &shapes, &claim, &budget);
     if !keep_exact {
         crate::ops::beyond_range::keep_exact_beyond_range(&mut truth.value);
     }

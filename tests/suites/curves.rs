@@ -64,5 +64,7 @@ mod space_pairs_exact;
 mod spline_conic_exact;
 #[path = "../verify_arc.rs"]
 mod verify_arc;
+#[path = "../verify_coincident.rs"]
+mod verify_coincident;
 #[path = "../walk_curve.rs"]
 mod walk_curve;

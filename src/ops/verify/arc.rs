@@ -15,8 +15,9 @@
 //!   ([`off_arc`]) lies beyond it.
 //! - **confirmed** also when the answer is `coincident` (every arc of one curve is
 //!   shared) and each claimed end is proven within the tolerance of the curve: a
-//!   certified projection of the end (an exact point) has a proven foot within it.
-//!   (An end away from coincident curves is not refuted: left undecided.)
+//!   certified projection of the end (an exact point) has a proven foot within it;
+//!   **refuted** when a claimed end is proven beyond the tolerance of one of the curves
+//!   (every foot of its projection and every end of that curve lie beyond it).
 //! - **undecided** otherwise, with the reason.
 
 use rug::Rational;
@@ -30,6 +31,7 @@ use crate::num::Interval;
 use crate::ops::algebraic::overlap::{exact_point, shares_arc};
 use crate::ops::answer::{Answer, SegmentAnswer};
 use crate::ops::shape::Shape;
+use crate::ops::{Options, ProjectOptions};
 
 use super::{ClaimedArc, ClaimedPoint};
 
@@ -42,6 +44,7 @@ pub(super) fn arc_verdict(
     shapes: &[Shape],
     arc: &ClaimedArc,
     tol2: &Rational,
+    budget: &Options,
 ) -> (ItemVerdict, Option<[Vec<Region>; 2]>) {
     let placed = place(arc, shapes);
     let regions = placed.as_ref().ok().cloned();
@@ -123,9 +126,19 @@ pub(super) fn arc_verdict(
         Answer::Coincident => {
             // Every arc of one curve is shared: the claim holds when both ends are
             // proven within the tolerance of the curve.
-            let on: Vec<Option<(f64, bool)>> =
-                placed.iter().map(|r| near_curve(shapes, r, tol2)).collect();
-            if let [Some((a, ea)), Some((b, eb))] = on[..] {
+            let on: Vec<Near> = placed
+                .iter()
+                .map(|r| near_curves(shapes, r, tol2, budget))
+                .collect();
+            if let Some(k) = on.iter().position(|n| *n == Near::Beyond) {
+                let why = format!(
+                    "the curves coincide, and the claimed end `{}` is proven beyond the \
+                     tolerance of them (every foot of its projection and every end of the \
+                     curve lie beyond it)",
+                    ENDS[k]
+                );
+                verdict(Verdict::Refuted, status, None, Some(why))
+            } else if let [Near::Within(a, ea), Near::Within(b, eb)] = on[..] {
                 let why = "the curves coincide, and both claimed ends are proven within the \
                            tolerance of them (each by a certified point of the curve)";
                 // No stronger than the weakest proof used (the answer's, the feet's).
@@ -157,45 +170,107 @@ pub(super) fn arc_verdict(
     (out, regions)
 }
 
+/// Where a claimed end lies against coincident curves.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Near {
+    /// Proven within the tolerance of every curve: the largest distance to the proven
+    /// point used, and whether every proof used was exact.
+    Within(f64, bool),
+    /// Proven beyond the tolerance of some curve (so of the arcs they share).
+    Beyond,
+    /// Neither could be proven.
+    Unknown,
+}
+
 /// Whether a claimed end (its regions: each a single exact point, or nothing is
-/// proven) lies within the tolerance of the first curve: each region's point is
-/// projected onto it (the certified projection, every foot: any proven foot is a point
-/// of the curve, and the nearest-only search may leave a tie at distance 0 undecided),
-/// and some proven foot or an end of the curve ([`curve_ends`]) must be within the
-/// tolerance of it. Returns the largest such distance, and whether every proof used was
-/// exact (an exact foot; an end's interval enclosure is not).
-fn near_curve(shapes: &[Shape], claim: &[Region], tol2: &Rational) -> Option<(f64, bool)> {
-    let curve = shapes.first()?;
-    let how = crate::ops::ProjectOptions {
+/// decided) is proven within the tolerance of the shared point set of coincident
+/// curves, or beyond it.
+///
+/// `coincident` means one shape lies in the other (the same curve, a Bézier on a line
+/// or a conic, a curve in a plane or on a quadric), so the shared set lies in every
+/// parametric curve among the shapes: the end must be within the tolerance of each of
+/// them ([`near_one`]), and it is beyond the shared set when it is beyond one of them.
+/// With no parametric curve among the shapes nothing is decided.
+fn near_curves(shapes: &[Shape], claim: &[Region], tol2: &Rational, budget: &Options) -> Near {
+    let curves: Vec<&Shape> = shapes
+        .iter()
+        .filter(|s| matches!(s, Shape::Curve(_) | Shape::Curve2(_)))
+        .collect();
+    if curves.is_empty() || claim.iter().any(|r| r.max_distance2(r) != Some(0.into())) {
+        return Near::Unknown; // a box: the projection takes a point
+    }
+    let mut out = Near::Within(0.0, true);
+    for curve in curves {
+        out = match (out, near_one(curve, claim, tol2, budget)) {
+            (_, Near::Beyond) | (Near::Beyond, _) => return Near::Beyond,
+            (Near::Within(a, ea), Near::Within(b, eb)) => Near::Within(a.max(b), ea && eb),
+            _ => Near::Unknown,
+        };
+    }
+    out
+}
+
+/// One curve against a claimed end whose regions are exact points. **Within**: each
+/// point projected onto the curve (the certified projection, every foot: any proven
+/// foot is a point of the curve, and the nearest-only search may leave a tie at
+/// distance 0 undecided) has a proven foot, or an end of the curve ([`curve_ends`]),
+/// within the tolerance. **Beyond**: the distance to a curve is smallest at a foot or
+/// at an end of an open curve (OPERATIONS.md §3.2; the argument of `ops::nearest`), so
+/// when the feet are complete and every foot's box and every end's enclosure lies
+/// beyond the tolerance of the point, the whole curve does. A curve whose domain ends
+/// are rounded (an irrational angle) is never proven beyond unless it is closed.
+fn near_one(curve: &Shape, claim: &[Region], tol2: &Rational, budget: &Options) -> Near {
+    let how = ProjectOptions {
         nearest: false,
         direction: None,
-        options: crate::ops::Options::default(),
+        options: budget.clone(),
     };
-    let (mut worst, mut exact) = (0.0f64, true);
+    let closed = match curve {
+        Shape::Curve(c) => c.is_closed(),
+        Shape::Curve2(c) => c.is_closed(),
+        _ => false,
+    };
+    let ends = curve_ends(curve);
+    let (mut worst, mut exact, mut within) = (0.0f64, true, true);
     for region in claim {
-        if region.max_distance2(region)? != 0 {
-            return None; // a box: the projection takes a point
-        }
+        let one = std::slice::from_ref(region);
         let at = crate::ops::Position::Exact(region.center());
-        let feet = crate::ops::project(&at, curve, &how).ok()?;
+        let Ok(feet) = crate::ops::project(&at, curve, &how) else {
+            return Near::Unknown;
+        };
         let foot_exact = feet.status == Status::Exact;
-        let proven = feet
-            .value
-            .points()
+        let points = feet.value.points();
+        let proven = points
             .iter()
             .filter(|p| super::exists(feet.status, p))
-            .map(|p| (super::truth_region(p), foot_exact))
-            .collect::<Vec<_>>();
-        let ends = curve_ends(curve).into_iter().map(|r| (r, false));
-        let (foot, how_exact) = proven
-            .into_iter()
-            .chain(ends)
-            .find(|(t, _)| relation(std::slice::from_ref(region), t, tol2) == Relation::Within)
-            .map(|(t, e)| (distance(std::slice::from_ref(region), &t), e))?;
-        worst = worst.max(foot);
-        exact &= how_exact;
+            .map(|p| (super::truth_region(p), foot_exact));
+        let near = proven
+            .chain(ends.iter().map(|r| (r.clone(), false)))
+            .find(|(t, _)| relation(one, t, tol2) == Relation::Within);
+        if let Some((t, e)) = near {
+            worst = worst.max(distance(one, &t));
+            exact &= e;
+            continue;
+        }
+        within = false;
+        let all_feet = feet.complete
+            && feet.status != Status::Undecided
+            && matches!(feet.value, Answer::Points(_) | Answer::Empty);
+        let ends_known = closed || ends.len() == 2;
+        let beyond = |t: &Region| relation(one, t, tol2) == Relation::Beyond;
+        if all_feet
+            && ends_known
+            && points.iter().all(|p| beyond(&super::truth_region(p)))
+            && (closed || ends.iter().all(beyond))
+        {
+            return Near::Beyond;
+        }
     }
-    Some((worst, exact))
+    if within {
+        Near::Within(worst, exact)
+    } else {
+        Near::Unknown
+    }
 }
 
 /// Enclosures of the curve's two domain ends (points of the curve that are no foot

@@ -203,8 +203,14 @@ fn distance(claim: &[Region], truth: &Region) -> f64 {
 
 /// Compare `claim` with the certified answer `truth`; `shapes` are the objects whose
 /// parameters a claim by `params` names, in order (the `objects` of `intersect`, the
-/// `onto` of `project`, the `shell` of `classify`).
-pub fn verify(truth: &Certified<Answer>, shapes: &[Shape], claim: &Claim) -> Verification {
+/// `onto` of `project`, the `shell` of `classify`). `budget` bounds the work of the
+/// checks that solve again (the projections of a claimed arc's ends).
+pub fn verify(
+    truth: &Certified<Answer>,
+    shapes: &[Shape],
+    claim: &Claim,
+    budget: &crate::ops::Options,
+) -> Verification {
     let mut items = vec![];
     if let Some(k) = &claim.kind {
         items.push(kind_verdict(truth, k));
@@ -252,7 +258,7 @@ pub fn verify(truth: &Certified<Answer>, shapes: &[Shape], claim: &Claim) -> Ver
         relations.push(Some(rel));
     }
     if let Some(a) = &claim.arc {
-        let (verdict, regions) = arc::arc_verdict(truth, shapes, a, &tol2);
+        let (verdict, regions) = arc::arc_verdict(truth, shapes, a, &tol2, budget);
         items.push(verdict);
         for end in regions.map_or([None, None], |r| r.map(Some)) {
             relations.push(end.map(|r| truths.iter().map(|t| relation(&r, t, &tol2)).collect()));
