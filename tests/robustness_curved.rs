@@ -342,6 +342,27 @@ fn seam_copies_of_nurbs_roots_are_merged() {
     }
 }
 
+/// The soak of seed 25 (2000 NURBS pole cases): 1 wrong at gap 1e-12 — two roots
+/// 6·10⁻⁷ apart on either side of a pole, the circle at x ≈ −12, and the first root's
+/// point box 2·10⁻⁶ wide held both (the NURBS evaluated in intervals over a parameter
+/// box 2·10⁻⁸ wide: the box grows with the coordinates, not with the circle). A point
+/// box is now the intersection of the curve's and the surface's enclosures
+/// (`ops::certified::meet`). That seed, and more cases of the same gaps.
+#[test]
+fn nurbs_point_boxes_near_a_pole_hold_one_root_each() {
+    use geocert::robust::curved::paths::run;
+    let mut cases = vec![(Gap::Pow(12), 18384491836664908020u64)];
+    let mut rng = geocert::num::rng::Rng::new(0x6001e);
+    for k in 0..12 {
+        cases.push((Gap::Pow(11 + k % 3), rng.next_u64()));
+    }
+    for (gap, seed) in cases {
+        let c = case(Family::PoleNurbsCircleSphere, gap, seed);
+        let o = run(&c);
+        assert!(!o.certified_wrong, "{c:?}: {o:?}");
+    }
+}
+
 /// Two spheres meeting across the first one's seam and pole (`robust::curved::ssi`):
 /// never a wrong certificate at any gap, all three topologies met, nearly all decided.
 #[test]

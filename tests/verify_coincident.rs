@@ -175,7 +175,10 @@ fn scaled(v: &Value, s: f64) -> Value {
         Value::Object(o) => Value::Object(
             o.iter()
                 .map(|(k, x)| {
-                    let keep = matches!(k.as_str(), "knots" | "weights" | "degree" | "type" | "normal");
+                    let keep = matches!(
+                        k.as_str(),
+                        "knots" | "weights" | "degree" | "type" | "normal"
+                    );
                     (k.clone(), if keep { x.clone() } else { scaled(x, s) })
                 })
                 .collect(),

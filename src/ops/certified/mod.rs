@@ -456,6 +456,20 @@ pub fn curve_point<C: crate::curve::Curve<D>, const D: usize>(
     (p, b)
 }
 
+/// Two enclosures of one point (a root's point on each of two objects): their
+/// intersection, which holds every point both hold. A far smaller box where one
+/// enclosure is loose — a NURBS curve evaluated in intervals far from the origin, whose
+/// box grows with the coordinates, not with the curve. Where the two miss (a singular
+/// box may hold no root at all) the first is kept.
+pub fn meet<const D: usize>(a: [Interval; D], b: &[Interval; D]) -> [Interval; D] {
+    let both: [Interval; D] = std::array::from_fn(|i| a[i].intersection(&b[i]));
+    if both.iter().any(Interval::is_empty) {
+        a
+    } else {
+        both
+    }
+}
+
 /// Roots in a curve's one parameter as points of the curve ([`curve_point`]).
 pub fn curve_points<C: crate::curve::Curve<D>, const D: usize>(
     c: &C,

@@ -292,7 +292,7 @@ pub fn intersect_curve2_curve2<A: Curve<2>, B: Curve<2>>(
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<2>>>, crate::GeomError> {
     use crate::ops::certified::{
-        certify_roots, curve_point, curve_unknowns, pieces, CertifiedPoint, Unknowns,
+        certify_roots, curve_point, curve_unknowns, meet, pieces, CertifiedPoint, Unknowns,
     };
     let stop = || opts.late();
     let float = intersect_curve_curve_until(a, b, a_samples, b_samples, precision, &stop);
@@ -335,7 +335,9 @@ pub fn intersect_curve2_curve2<A: Curve<2>, B: Curve<2>>(
     Ok(roots.map(|rs| {
         rs.into_iter()
             .map(|root| {
-                let (point, point_box) = curve_point(a, root.params[0], &root.enclosure[0]);
+                let (point, on_a) = curve_point(a, root.params[0], &root.enclosure[0]);
+                let (_, on_b) = curve_point(b, root.params[1], &root.enclosure[1]);
+                let point_box = meet(on_a, &on_b);
                 CertifiedPoint {
                     root,
                     point,

@@ -378,8 +378,8 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
     opts: &crate::ops::certified::Options,
 ) -> Result<crate::Certified<Vec<crate::ops::certified::CertifiedPoint<3>>>, crate::GeomError> {
     use crate::ops::certified::{
-        certify_roots, curve_point, curve_unknowns, pieces, surface_unknowns, CertifiedPoint,
-        Unknowns,
+        certify_roots, curve_point, curve_unknowns, meet, pieces, surface_point, surface_unknowns,
+        CertifiedPoint, Unknowns,
     };
     let seeds = Seeds {
         curve_samples,
@@ -433,7 +433,11 @@ pub fn intersect_curve_surface<S: Surface, C: Curve<3>>(
         .map(|rs| {
             rs.into_iter()
                 .map(|root| {
-                    let (point, point_box) = curve_point(curve, root.params[2], &root.enclosure[2]);
+                    let (point, on_curve) = curve_point(curve, root.params[2], &root.enclosure[2]);
+                    let uv = [root.params[0], root.params[1]];
+                    let (_, on_surface) =
+                        surface_point(surface, uv, &root.enclosure[0], &root.enclosure[1]);
+                    let point_box = meet(on_curve, &on_surface);
                     CertifiedPoint {
                         root,
                         point,
