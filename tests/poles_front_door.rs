@@ -218,14 +218,26 @@ fn in_box(x: &Float, b: &Value) -> bool {
     *x >= lo && *x <= hi
 }
 
-/// `u` modulo 2π in its box (a box straddling 0 is the arc across the seam).
+/// `x` in the box up to `2⁻²⁵⁰·|x|`: the truth's own rounding at 300 bits. A coordinate
+/// that is a double exactly (a curve in the plane `y = c`, every control point with
+/// `y = c`) comes out of the 300-bit evaluation `c ± 2⁻³⁰⁰|c|`, and the exact path's box
+/// is then the point `[c, c]`. A box that misses the truth by more is still caught.
+fn in_box_up_to_rounding(x: &Float, b: &Value) -> bool {
+    let slack = Float::with_val(BITS, x.clone().abs() >> 250u32);
+    let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
+    Float::with_val(BITS, x + &slack) >= lo && Float::with_val(BITS, x - &slack) <= hi
+}
+
+/// `u` modulo 2π in its box (a box straddling 0 is the arc across the seam), up to
+/// `2⁻²⁵⁰` (the truth's rounding: an angle that is exactly 0, a curve in the meridian
+/// plane, comes out of `atan2` at 300 bits as `±10⁻⁹⁰`).
 fn angle_in_box(u: &Float, b: &Value) -> bool {
     let two_pi = Float::with_val(BITS, Constant::Pi) * 2u32;
+    let slack = Float::with_val(BITS, 1u32) >> 250u32;
+    let (lo, hi) = (b[0].as_f64().unwrap(), b[1].as_f64().unwrap());
     [-1i32, 0, 1].iter().any(|&k| {
-        in_box(
-            &Float::with_val(BITS, u + Float::with_val(BITS, &two_pi * k)),
-            b,
-        )
+        let x = Float::with_val(BITS, u + Float::with_val(BITS, &two_pi * k));
+        Float::with_val(BITS, &x + &slack) >= lo && Float::with_val(BITS, &x - &slack) <= hi
     })
 }
 
@@ -253,7 +265,7 @@ fn check(id: &str, q: &Quadric, c: &TestCurve, surface_first: bool) -> Vec<(Valu
         let x = c.at(&t);
         for i in 0..3 {
             assert!(
-                in_box(&x[i], &p["box"][i]),
+                in_box_up_to_rounding(&x[i], &p["box"][i]),
                 "{id}: point {i} of t = {t:.20}: {p}"
             );
         }
@@ -320,6 +332,15 @@ fn curve_through(rng: &mut Rng, k: usize, through: [f64; 3], scale: f64) -> Test
     }
 }
 
+/// The roots within `10⁻¹²` (in latitude) of a pole.
+fn pole_roots(points: &[(Value, [Float; 3])]) -> usize {
+    let half_pi = Float::with_val(BITS, Constant::Pi) / 2u32;
+    points
+        .iter()
+        .filter(|(_, [_, _, v])| Float::with_val(BITS, &half_pi - v.clone().abs()) < 1e-12)
+        .count()
+}
+
 /// The points whose `u` box is the whole turn (the pole convention): each must report
 /// `u = 0` and be a true pole root (`|v|` within 1e-12 of π/2).
 fn pole_convention(points: &[(Value, [Float; 3])], surface_first: bool, id: &str) -> usize {
@@ -356,8 +377,12 @@ fn curves_through_a_pole_answer_complete_with_the_pole_root() {
         // An axis-aligned pole is a double, so the curve passes through it: its box
         // holds it. A tilted pole is rounded: the curve passes within 1e-16 of it, and
         // the root's box holds the axis or not (either way the truth is inside).
+        // On the exact path (a Bézier or NURBS curve against a whole sphere or
+        // ellipsoid) the root's coordinates are correctly rounded: the box holds the
+        // pole only when the curve passes exactly through it, else `u` is determined.
         let whole = pole_convention(&points, first, &id);
-        assert!(whole == 1 || (tilted && whole == 0), "{id}: {whole}");
+        assert!(whole <= 1, "{id}: {whole}");
+        assert_eq!(pole_roots(&points), 1, "{id}: one root at the pole");
     }
 }
 
@@ -405,7 +430,8 @@ fn curves_through_a_pole_and_the_seam_answer_each_root_once() {
         let id = format!("seam{k}");
         let first = k % 3 != 0;
         let points = check(&id, &q, &curve, first);
-        assert_eq!(pole_convention(&points, first, &id), 1, "{id}");
+        assert!(pole_convention(&points, first, &id) <= 1, "{id}");
+        assert_eq!(pole_roots(&points), 1, "{id}: one root at the pole");
         // The seam root: u = 0 (up to the 300-bit rounding of the truth; its box holds
         // it mod 2π: checked above), once.
         let seam = points

@@ -15,7 +15,7 @@
 //! certifier solves piece by piece as it does across NURBS knots.
 
 use super::derived::{q, round_down, round_up};
-use super::domain::piecewise_jet;
+use super::domain::{periodic_jet, piecewise_jet};
 use super::{is_angle_bound, Curve, StepHint};
 use crate::error::GeomError;
 use crate::num::Real;
@@ -174,7 +174,14 @@ impl<const D: usize, C: Curve<D> + Clone> Curve<D> for Composite<C> {
         if let Some(k) = self.pin {
             return self.piece_jet(k, t, order, false);
         }
-        piecewise_jet(t, &self.breaks, |k, tk| self.piece_jet(k, tk, order, true))
+        let eval =
+            |tw: &T| piecewise_jet(tw, &self.breaks, |k, tk| self.piece_jet(k, tk, order, true));
+        // A closed curve wraps its parameter (see `NurbsCurve::jet`).
+        if self.closed {
+            periodic_jet(t, self.domain(), eval)
+        } else {
+            eval(t)
+        }
     }
     /// The inner joints, and the pieces' own breaks moved to the global parameter
     /// (exactly in rationals, rounded outward).

@@ -245,7 +245,11 @@ impl<const D: usize> Curve<D> for NurbsCurve<D> {
                 self.span_jet(self.knots.span_of_piece(i), tp, order)
             })
         };
-        if self.periodic {
+        // A closed curve wraps its parameter, periodic or only clamped closed (C⁰ at
+        // the seam): the certifier treats the parameter of every closed curve as an
+        // angle (`ops::certified::curve_unknowns`), which is sound only if the jet
+        // beyond the domain is the curve's own, not the end spans' continuation.
+        if self.periodic || self.closed {
             periodic_jet(t, self.domain.pair(), eval)
         } else {
             eval(t)

@@ -3,7 +3,7 @@
 //! An interval parameter is split at the vertices it straddles ([`piecewise_jet`]), so
 //! the derivative enclosure covers the one-sided derivatives of every segment touched.
 
-use super::domain::piecewise_jet;
+use super::domain::{periodic_jet, piecewise_jet};
 use super::{Curve, StepHint};
 use crate::error::{require_finite_all, GeomError};
 use crate::num::vector::{add_scaled, lift, scale, sub, zero};
@@ -63,6 +63,19 @@ impl<const D: usize> Polyline<D> {
     pub fn params(&self) -> &[f64] {
         &self.params
     }
+    /// The jet on the open chain of segments (the last segment's continuation beyond
+    /// the end).
+    fn open_jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; D]> {
+        piecewise_jet(t, &self.params, |i, ti| {
+            let (a, b) = (lift(ti, &self.points[i]), lift(ti, &self.points[i + 1]));
+            let (ta, tb) = (ti.lift(self.params[i]), ti.lift(self.params[i + 1]));
+            let d = scale(&(ti.one_like() / (tb - &ta)), &sub(&b, &a));
+            let mut jet = vec![add_scaled(&a, &(ti.clone() - ta), &d), d];
+            jet.resize(order + 1, zero(ti));
+            jet
+        })
+    }
+
     fn piece_of(&self, t: f64) -> usize {
         let n = self.params.partition_point(|&b| b <= t);
         n.saturating_sub(1).min(self.params.len() - 2)
@@ -77,14 +90,11 @@ impl<const D: usize> Curve<D> for Polyline<D> {
         self.points[0] == self.points[self.points.len() - 1]
     }
     fn jet<T: Real>(&self, t: &T, order: usize) -> Vec<[T; D]> {
-        piecewise_jet(t, &self.params, |i, ti| {
-            let (a, b) = (lift(ti, &self.points[i]), lift(ti, &self.points[i + 1]));
-            let (ta, tb) = (ti.lift(self.params[i]), ti.lift(self.params[i + 1]));
-            let d = scale(&(ti.one_like() / (tb - &ta)), &sub(&b, &a));
-            let mut jet = vec![add_scaled(&a, &(ti.clone() - ta), &d), d];
-            jet.resize(order + 1, zero(ti));
-            jet
-        })
+        // A closed polyline wraps its parameter (see `NurbsCurve::jet`).
+        if self.is_closed() {
+            return periodic_jet(t, self.domain(), |tw| self.open_jet(tw, order));
+        }
+        self.open_jet(t, order)
     }
     /// The inner vertices.
     fn tangent_breaks(&self) -> Vec<(f64, f64)> {

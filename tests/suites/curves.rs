@@ -12,6 +12,8 @@
 // than once, which clippy flags.
 #![allow(clippy::duplicate_mod)]
 
+#[path = "../closed_curves_wrap.rs"]
+mod closed_curves_wrap;
 #[path = "../conic_arcs_exact.rs"]
 mod conic_arcs_exact;
 #[path = "../curve_derivatives.rs"]

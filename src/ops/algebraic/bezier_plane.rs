@@ -33,7 +33,7 @@ const REFINE_BUDGET: usize = 4000;
 /// `num(t)/den(t)` correctly rounded at the root `t`; `None` past the budget or once
 /// `deadline` has passed (checked per refinement, issue 20: the caller then leaves the
 /// pair to the numeric certifier, which reports the time limit).
-fn round_at(
+pub(super) fn round_at(
     t: &RealRoot,
     num: &Polynomial,
     den: &Polynomial,

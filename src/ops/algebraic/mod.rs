@@ -41,6 +41,7 @@ mod params;
 pub(crate) mod quadric_feet;
 pub(crate) mod section_answer;
 pub(crate) mod space_conics;
+pub(crate) mod spline_quadric;
 pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};

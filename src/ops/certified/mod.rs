@@ -329,9 +329,12 @@ pub(crate) fn push_unique(
         .iter_mut()
         .find(|r| shifted_inside(&root.enclosure, &r.enclosure, unknowns))
     {
-        // Keep the copy whose enclosure lies inside the domain.
+        // An undecided box may hold more roots than this one: both stay, and
+        // `seam::drop_copies` drops the box when one root is proven in it. (Replacing
+        // the box by the root lost a second root it held: soak seed 26, two roots
+        // 7·10⁻⁷ apart across a closed NURBS curve's seam near a sphere's pole.)
         if r.status == Status::Undecided && root.status != Status::Undecided {
-            *r = root;
+            roots.push(root);
         }
         return;
     }
@@ -544,6 +547,20 @@ mod tests {
         let mut roots = vec![root(0.3, 0.7, Status::Verified, 1)];
         push_unique(&mut roots, root(0.45, 0.55, Status::Verified, 1), &u);
         assert_eq!((roots.len(), roots[0].enclosure[0].lo()), (1, 0.3));
+        // A verified root inside an undecided box: the box may hold another root, so
+        // both stay (`seam::drop_copies` drops the box only with a proof). Also across
+        // the seam of a periodic coordinate.
+        for (periodic, shift) in [(false, 0.0), (true, 1.0)] {
+            let u = line(periodic);
+            let mut roots = vec![root(-0.2, 0.2, Status::Undecided, 1)];
+            push_unique(
+                &mut roots,
+                root(0.05 + shift, 0.1 + shift, Status::Verified, 1),
+                &u,
+            );
+            let kinds: Vec<Status> = roots.iter().map(|r| r.status).collect();
+            assert_eq!(kinds, [Status::Undecided, Status::Verified]);
+        }
     }
 
     #[test]

@@ -52,6 +52,34 @@ pub fn drop_copies<S: System>(sys: &S, roots: &mut Vec<CertifiedRoot>, unknowns:
             i += 1;
         }
     }
+    drop_covered_undecided(sys, roots, unknowns);
+}
+
+/// Drop an undecided box that holds a verified root's box (up to whole periods) when
+/// one Krawczyk step proves a single root in it ([`same_root`]): its only root is then
+/// the verified one. Otherwise both stay (the box may hold another root).
+fn drop_covered_undecided<S: System>(sys: &S, roots: &mut Vec<CertifiedRoot>, unknowns: &Unknowns) {
+    let mut i = 0;
+    while i < roots.len() {
+        let u = &roots[i];
+        let covered = u.status == Status::Undecided
+            && roots.iter().any(|v| {
+                v.status == Status::Verified
+                    && super::shifted_inside(&v.enclosure, &u.enclosure, unknowns)
+                    && same_root(
+                        sys,
+                        &v.enclosure,
+                        &u.enclosure,
+                        unknowns,
+                        SEAM_BITS.max(u.bits).max(v.bits),
+                    )
+            });
+        if covered {
+            roots.remove(i);
+        } else {
+            i += 1;
+        }
+    }
 }
 
 /// How many of the root's estimate coordinates lie inside the domain (prefer those).

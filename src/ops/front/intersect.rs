@@ -12,6 +12,7 @@ use crate::ops::algebraic::curve_quadric::curve_quadric;
 use crate::ops::algebraic::implicit_quadric;
 use crate::ops::algebraic::pairs;
 use crate::ops::algebraic::space_conics;
+use crate::ops::algebraic::spline_quadric::spline_quadric;
 use crate::ops::answer::Answer;
 use crate::ops::linear;
 use crate::ops::options::{Method, Options};
@@ -106,9 +107,11 @@ fn algebraic(
             .map(Ok),
         (Shape::Curve(c), Shape::Surface(s)) => on_surface::curve_on_surface(c, s)
             .or_else(|| curve_quadric(c, s, false))
+            .or_else(|| spline_quadric(c, s, false, deadline))
             .map(Ok),
         (Shape::Surface(s), Shape::Curve(c)) => on_surface::curve_on_surface(c, s)
             .or_else(|| curve_quadric(c, s, true))
+            .or_else(|| spline_quadric(c, s, true, deadline))
             .map(Ok),
         (Shape::Linear(l), Shape::Quadric(q)) => implicit_quadric::line_quadric(l, q, true).map(Ok),
         (Shape::Quadric(q), Shape::Linear(l)) => {
