@@ -225,6 +225,45 @@ impl Implicit<3> for Plane {
     }
 }
 
+/// The plane `F(x) = n·x + d` (§1.4) of the linear kernel's implicit form, its double
+/// `normal` and `d` taken as they are: every constant enters the formula exactly, so
+/// an interval evaluation encloses the exact `F` of the plane the user gave. (A
+/// parametric [`Plane`] built from it would need a point on it, and `−d n/|n|²` is
+/// rarely a double: the certifier would decide the roots of a shifted plane.)
+#[derive(Debug, Clone, PartialEq)]
+pub struct ImplicitPlane {
+    pub(crate) normal: [f64; 3],
+    pub(crate) d: f64,
+}
+
+impl ImplicitPlane {
+    /// Errors name `normal` (non-finite or zero) and `d` (non-finite).
+    pub fn new(normal: [f64; 3], d: f64) -> Result<ImplicitPlane, GeomError> {
+        for (i, &c) in normal.iter().enumerate() {
+            require_finite(&format!("normal[{i}]"), c)?;
+        }
+        require_finite("d", d)?;
+        if normal.iter().all(|&c| c == 0.0) {
+            return Err(GeomError::InvalidValue {
+                field: "normal".into(),
+                reason: "the normal is the zero vector".into(),
+            });
+        }
+        Ok(ImplicitPlane { normal, d })
+    }
+}
+
+impl Implicit<3> for ImplicitPlane {
+    /// `n·x + d`, gradient `n`, Hessian 0.
+    fn implicit_jet<T: Real>(&self, x: &[T; 3], order: usize) -> ImplicitJet<T, 3> {
+        let n = lift(&x[0], &self.normal);
+        let value = dot(x, &n) + x[0].lift(self.d);
+        let zero = x[0].zero_like();
+        let hessian = std::array::from_fn(|_| std::array::from_fn(|_| zero.clone()));
+        jet_of((value, n, hessian), order)
+    }
+}
+
 /// The quadric `F(x) = [x 1]ᵀ Q [x 1] = xᵀA x + 2bᵀx + c₀` (§1.4) of a symmetric 4×4
 /// matrix `Q = [[A, b], [bᵀ, c₀]]`.
 #[derive(Debug, Clone, PartialEq)]

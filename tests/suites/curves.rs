@@ -36,6 +36,8 @@ mod curved_forms_3d;
 mod derived_curves;
 #[path = "../derived_curves_json.rs"]
 mod derived_curves_json;
+#[path = "../helix_implicit_plane.rs"]
+mod helix_implicit_plane;
 #[path = "../intersect_curve_line2.rs"]
 mod intersect_curve_line2;
 #[path = "../intersect_curve_plane.rs"]

@@ -8,14 +8,17 @@ use super::seeds::{curve_box, curve_samples, reach, surface_box, surface_nodes, 
 use crate::certificate::Certified;
 use crate::curve::{AnyCurve2, AnyCurve3};
 use crate::error::GeomError;
+use crate::geom::Plane as LinearPlane;
 use crate::num::Interval;
 use crate::ops::answer::Answer;
+use crate::ops::bisection::intersect_curve_implicit_bisection;
 use crate::ops::intersect::{
     intersect_curve2_curve2, intersect_curve_surface, intersect_three_surfaces,
 };
 use crate::ops::options::Options;
-use crate::ops::shape::{Linear, Shape};
+use crate::ops::shape::{Linear, LinearObject, Shape};
 use crate::ops::space_curves::intersect_curve_curve;
+use crate::surface::implicit::ImplicitPlane;
 use crate::surface::AnySurface;
 
 pub(super) fn field(i: usize) -> String {
@@ -97,10 +100,13 @@ pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Ans
 }
 
 /// A space curve against a plane of the linear kernel, numerically (the pairs the exact
-/// solver does not take, such as the helix): the plane is cut to a rectangle whose image
-/// holds the curve's certified box with a margin
+/// solver does not take, such as the helix). An implicit plane `n·x + d = 0` is solved
+/// as the one equation `n·c(t) + d = 0` in the curve's parameter (§13.4,
+/// [`intersect_curve_implicit_bisection`]), its doubles exact in every evaluation, and
+/// reports no parameters. A parametric plane (exact on its doubles) is cut to a
+/// rectangle whose image holds the curve's certified box with a margin
 /// ([`super::intersect_surfaces::bounded_plane`]), so every common point lies inside it
-/// and `complete` keeps its meaning; an implicit plane reports no parameters.
+/// and `complete` keeps its meaning.
 fn curve_plane(
     plane: &Linear,
     curve_shape: &Shape,
@@ -112,6 +118,22 @@ fn curve_plane(
         .map_err(|e| e.at(&field(curve_at)))?
         .ok_or_else(|| unsupported(&field(curve_at), "expected a space curve"))?;
     let plane_at = 1 - curve_at;
+    if let LinearObject::Plane(LinearPlane::Implicit { normal, d }) =
+        plane.doubles().map_err(|e| e.at(&field(plane_at)))?
+    {
+        let g = ImplicitPlane::new([normal[0], normal[1], normal[2]], d)
+            .map_err(|e| e.at(&field(plane_at)))?;
+        let c = intersect_curve_implicit_bisection(
+            &curve,
+            &g,
+            &curve_samples(&curve, opts)?,
+            &opts.precision,
+            &opts.certify(),
+        )?;
+        // The plane has no parameters of its own.
+        let sizes: &[usize] = if plane_first { &[0, 1] } else { &[1, 0] };
+        return Ok(points::points(c, sizes, None));
+    }
     let op = super::intersect_surfaces::bounded_plane(plane, &curve_box(&curve))
         .map_err(|e| e.at(&field(plane_at)))?;
     curve_surface(
