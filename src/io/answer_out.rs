@@ -41,6 +41,7 @@ pub(crate) fn point(p: &Point) -> PointOut {
             params: e.params.iter().map(|p| texts(p)).collect(),
             distance_squared: e.distance_squared.as_ref().map(Rational::to_string),
         }),
+        region: p.region.clone(),
     }
 }
 

@@ -53,6 +53,10 @@ pub struct PointOut {
     pub nearest: Option<bool>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub exact: Option<ExactOut>,
+    /// Surface ∩ surface contacts: the region in which the intersection is not
+    /// resolved (docs/FORMAT.md "Curves").
+    #[serde(skip_serializing_if = "Option::is_none", serialize_with = "doubles")]
+    pub region: Option<Vec<Bounds>>,
 }
 
 /// A line in the parameter plane of a parametric plane: `origin + t·dir` (§8 eq. (8.4)).

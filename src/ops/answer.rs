@@ -38,6 +38,11 @@ pub struct Point {
     pub nearest: Option<bool>,
     /// The exact values (exact answers, on request).
     pub exact: Option<ExactPoint>,
+    /// Surface ∩ surface contacts only: an enclosure in space of the region around the
+    /// point in which the intersection is not resolved (the exact input's intersection
+    /// there — a touching point, a small loop, crossing branches or nothing — lies in
+    /// it; OPERATIONS.md §9.5, [`crate::ops::surface_surface::CertifiedSingularPoint`]).
+    pub region: Option<Vec<Bounds>>,
 }
 
 /// The exact rationals of a point.

@@ -215,10 +215,11 @@ impl Implicit<3> for Torus {
 }
 
 impl Implicit<3> for Plane {
-    /// `(x − p)·(a × b)`.
+    /// `(x − p)·(a × b)`, with `p` the origin box for enclosures
+    /// ([`Plane::through_box`]).
     fn implicit_jet<T: Real>(&self, x: &[T; 3], order: usize) -> ImplicitJet<T, 3> {
         let n = cross(&lift(&x[0], &self.a), &lift(&x[0], &self.b));
-        let value = dot(&sub(x, &lift(&x[0], &self.origin)), &n);
+        let value = dot(&sub(x, &self.origin_in(&x[0])), &n);
         let zero = x[0].zero_like();
         let hessian = std::array::from_fn(|_| std::array::from_fn(|_| zero.clone()));
         jet_of((value, n, hessian), order)
@@ -228,8 +229,9 @@ impl Implicit<3> for Plane {
 /// The plane `F(x) = n·x + d` (§1.4) of the linear kernel's implicit form, its double
 /// `normal` and `d` taken as they are: every constant enters the formula exactly, so
 /// an interval evaluation encloses the exact `F` of the plane the user gave. (A
-/// parametric [`Plane`] built from it would need a point on it, and `−d n/|n|²` is
-/// rarely a double: the certifier would decide the roots of a shifted plane.)
+/// parametric [`Plane`] built from it needs a point on it, and `−d/n_k` is rarely a
+/// double: it is then enclosed by a box, [`Plane::through_box`], which a near-tangency
+/// within an ulp of the plane cannot resolve.)
 #[derive(Debug, Clone, PartialEq)]
 pub struct ImplicitPlane {
     pub(crate) normal: [f64; 3],

@@ -13,9 +13,20 @@ const ALL: [f64; 2] = [f64::NEG_INFINITY, f64::INFINITY];
 
 /// The plane `origin + u·a + v·b` (CASES `plane` with `origin`, `u`, `v`; `a`, `b` need
 /// not be orthogonal or unit), on `ℝ²` or a rectangle.
+///
+/// The origin may be a box instead of a point ([`Plane::through_box`]): an implicit
+/// plane `n·x + d = 0` rarely has a point with double coordinates (`x = 1/3`), so the
+/// front door gives it the box of one ulp around `−d/n_k` that holds one, and exact
+/// spanning vectors. Every enclosure (interval or MPFR) then evaluates the origin as that
+/// box, so it encloses the point of *every* plane through the box with these vectors —
+/// and a certificate proven from enclosures (Krawczyk, exclusion, an arc in a box)
+/// holds for each of them, the user's exact plane among them. The float path uses the
+/// double `origin` (the rounded point).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Plane {
     pub(crate) origin: [f64; 3],
+    /// `Some((lo, hi))`: the origin is the box `[lo, hi]` (holding `origin`).
+    pub(crate) origin_box: Option<([f64; 3], [f64; 3])>,
     pub(crate) a: [f64; 3],
     pub(crate) b: [f64; 3],
     domain: Domain,
@@ -33,10 +44,45 @@ impl Plane {
         }
         Ok(Plane {
             origin,
+            origin_box: None,
             a,
             b,
             domain: (ALL, ALL),
         })
+    }
+
+    /// The planes spanned by `a`, `b` through the points of the box `[lo, hi]`, with the
+    /// rounded point `origin` inside it for the float path (struct doc). Errors as
+    /// [`Plane::new`], and `origin` (`invalid_value`) when the box is empty or does not
+    /// hold `origin`.
+    pub fn through_box(
+        origin: [f64; 3],
+        [lo, hi]: [[f64; 3]; 2],
+        a: [f64; 3],
+        b: [f64; 3],
+    ) -> Result<Plane, GeomError> {
+        require_finite_all("origin", &lo)?;
+        require_finite_all("origin", &hi)?;
+        if (0..3).any(|k| !(lo[k] <= origin[k] && origin[k] <= hi[k])) {
+            return Err(GeomError::InvalidValue {
+                field: "origin".into(),
+                reason: "the origin box does not hold the origin".into(),
+            });
+        }
+        let mut p = Plane::new(origin, a, b)?;
+        p.origin_box = (lo != hi).then_some((lo, hi));
+        Ok(p)
+    }
+
+    /// The origin in the number system of `like`: the box for enclosures, the rounded
+    /// point for f64 (struct doc).
+    pub(crate) fn origin_in<T: Real>(&self, like: &T) -> [T; 3] {
+        match &self.origin_box {
+            Some((lo, hi)) if !T::IS_F64 => {
+                std::array::from_fn(|k| like.lift(lo[k]).hull_with(&like.lift(hi[k])))
+            }
+            _ => lift(like, &self.origin),
+        }
     }
 
     /// The same plane on a rectangle (finite, non-empty).
@@ -64,7 +110,7 @@ impl Surface for Plane {
     }
     fn jet<T: Real>(&self, u: &T, v: &T, order: usize) -> Vec<[T; 3]> {
         let (a, b) = (lift(u, &self.a), lift(u, &self.b));
-        let p = add(&lift(u, &self.origin), &add(&scale(u, &a), &scale(v, &b)));
+        let p = add(&self.origin_in(u), &add(&scale(u, &a), &scale(v, &b)));
         let mut jet = vec![p];
         if order >= 1 {
             jet.push(a);

@@ -18,5 +18,7 @@ mod intersect_surface_surface_certified;
 mod intersect_surface_surface_float;
 #[path = "../intersect_three_surfaces.rs"]
 mod intersect_three_surfaces;
+#[path = "../ssi_contact_regions.rs"]
+mod ssi_contact_regions;
 #[path = "../ssi_families.rs"]
 mod ssi_families;

@@ -5,7 +5,7 @@
 
 use super::points;
 use super::seeds::{curve_box, curve_samples, reach, surface_box, surface_nodes, TURN};
-use crate::certificate::Certified;
+use crate::certificate::{Certified, Status};
 use crate::curve::{AnyCurve2, AnyCurve3};
 use crate::error::GeomError;
 use crate::geom::Plane as LinearPlane;
@@ -100,13 +100,15 @@ pub(crate) fn pair(a: &Shape, b: &Shape, opts: &Options) -> Result<Certified<Ans
 }
 
 /// A space curve against a plane of the linear kernel, numerically (the pairs the exact
-/// solver does not take, such as the helix). An implicit plane `n·x + d = 0` is solved
-/// as the one equation `n·c(t) + d = 0` in the curve's parameter (§13.4,
-/// [`intersect_curve_implicit_bisection`]), its doubles exact in every evaluation, and
-/// reports no parameters. A parametric plane (exact on its doubles) is cut to a
-/// rectangle whose image holds the curve's certified box with a margin
+/// solver does not take, such as the helix): the plane is cut to a rectangle whose image
+/// holds the curve's certified box with a margin
 /// ([`super::intersect_surfaces::bounded_plane`]), so every common point lies inside it
-/// and `complete` keeps its meaning.
+/// and `complete` keeps its meaning; an implicit plane is enclosed exactly there (its
+/// origin a one-ulp box where `−d/n_k` is not a double) and reports no parameters.
+/// An implicit plane `n·x + d = 0` is first solved as the one equation `n·c(t) + d = 0`
+/// in the curve's parameter (§13.4, [`intersect_curve_implicit_bisection`]), its
+/// doubles exact in every evaluation: that decides near-tangencies within an ulp of the
+/// plane, which the enclosed origin cannot.
 fn curve_plane(
     plane: &Linear,
     curve_shape: &Shape,
@@ -130,9 +132,12 @@ fn curve_plane(
             &opts.precision,
             &opts.certify(),
         )?;
-        // The plane has no parameters of its own.
-        let sizes: &[usize] = if plane_first { &[0, 1] } else { &[1, 0] };
-        return Ok(points::points(c, sizes, None));
+        // Decided and complete: done (the plane has no parameters of its own). Else (a
+        // root at a kink of a composite curve, where g' jumps): the plane route below.
+        if c.status != Status::Undecided && c.complete {
+            let sizes: &[usize] = if plane_first { &[0, 1] } else { &[1, 0] };
+            return Ok(points::points(c, sizes, None));
+        }
     }
     let op = super::intersect_surfaces::bounded_plane(plane, &curve_box(&curve))
         .map_err(|e| e.at(&field(plane_at)))?;

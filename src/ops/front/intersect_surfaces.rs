@@ -76,7 +76,8 @@ fn intersect(a: &Operand, b: &Operand, opts: &Options) -> Result<Certified<Answe
 }
 
 /// The plane cut to a rectangle around `bound` (module doc); the parameters are those
-/// of a parametric plane's own `u`, `v`, or of an orthonormal frame of an implicit one.
+/// of a parametric plane's own `u`, `v`, or of an exact frame of an implicit one
+/// ([`implicit_plane`]).
 pub(crate) fn bounded_plane(l: &Linear, bound: &[Interval; 3]) -> Result<Operand, GeomError> {
     let LinearObject::Plane(p) = l.doubles()? else {
         return Err(GeomError::Unsupported {
@@ -84,17 +85,13 @@ pub(crate) fn bounded_plane(l: &Linear, bound: &[Interval; 3]) -> Result<Operand
             reason: "expected a plane".into(),
         });
     };
-    let (origin, u, v, params) = match p {
-        LinearPlane::Parametric { origin, u, v } => (arr(&origin), arr(&u), arr(&v), true),
-        LinearPlane::Implicit { normal, d } => {
-            let n = arr(&normal);
-            let nn = dot(&n, &n);
-            let origin = n.map(|x| -d * x / nn);
-            let (e1, e2) = orthonormal(&n);
-            (origin, e1, e2, false)
+    let (surface, params) = match p {
+        LinearPlane::Parametric { origin, u, v } => {
+            (Plane::new(arr(&origin), arr(&u), arr(&v))?, true)
         }
+        LinearPlane::Implicit { normal, d } => (implicit_plane(&arr(&normal), d)?, false),
     };
-    let surface = Plane::new(origin, u, v)?;
+    let (origin, u, v) = (surface.origin(), surface.vectors().0, surface.vectors().1);
     let domain = cover(&origin, &u, &v, bound).ok_or_else(|| GeomError::Unsupported {
         field: "domain".into(),
         reason: "the other surface is unbounded: a plane needs a domain here".into(),
@@ -103,6 +100,45 @@ pub(crate) fn bounded_plane(l: &Linear, bound: &[Interval; 3]) -> Result<Operand
         surface: AnySurface::Plane(surface.with_domain(domain)?),
         params,
     })
+}
+
+/// The implicit plane `n·x + d = 0` as a parametric one that is the same plane for
+/// every enclosure ([`Plane::through_box`]): with `k` the largest component of `n` and
+/// `i`, `j` the others, the spanning vectors `u = n_k e_i − n_i e_k`, `v = n_k e_j −
+/// n_j e_k` are exactly perpendicular to `n` (their entries are `n`'s own, so
+/// `n·u = n_i n_k − n_k n_i = 0`), scaled by a common power of two to unit size where
+/// that is exact; the origin is `−d/n_k e_k`, and when that quotient is not a double,
+/// the box of its two neighbours, which holds the exact quotient (the division is
+/// correctly rounded). (A frame and origin rounded in f64 gave a shifted plane: a
+/// torus touched by the exact plane was certified `empty`.)
+fn implicit_plane(n: &[f64; 3], d: f64) -> Result<Plane, GeomError> {
+    let k = (0..3)
+        .max_by(|&i, &j| n[i].abs().total_cmp(&n[j].abs()))
+        .unwrap_or(2);
+    let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+    let mut u = [0.0; 3];
+    let mut v = [0.0; 3];
+    (u[i], u[k]) = (n[k], -n[i]);
+    (v[j], v[k]) = (n[k], -n[j]);
+    // A common power of two bringing |n_k| to [1, 2), kept only if exact for every entry.
+    let scale = 2f64.powi(-n[k].abs().log2().floor().clamp(-1000.0, 1000.0) as i32);
+    let exact = |x: &[f64; 3]| {
+        x.iter()
+            .all(|&c| (c * scale) / scale == c && (c * scale).is_finite())
+    };
+    if scale.is_finite() && scale > 0.0 && exact(&u) && exact(&v) {
+        u = u.map(|c| c * scale);
+        v = v.map(|c| c * scale);
+    }
+    let q = -d / n[k];
+    let mut origin = [0.0; 3];
+    origin[k] = q;
+    if n[k].mul_add(q, d) == 0.0 {
+        return Plane::new(origin, u, v);
+    }
+    let (mut lo, mut hi) = (origin, origin);
+    (lo[k], hi[k]) = (q.next_down(), q.next_up());
+    Plane::through_box(origin, [lo, hi], u, v)
 }
 
 fn arr(v: &nalgebra::Vector3<f64>) -> [f64; 3] {
@@ -119,22 +155,6 @@ fn cross(a: &[f64; 3], b: &[f64; 3]) -> [f64; 3] {
         a[2] * b[0] - a[0] * b[2],
         a[0] * b[1] - a[1] * b[0],
     ]
-}
-
-/// Two orthonormal vectors perpendicular to `n`.
-fn orthonormal(n: &[f64; 3]) -> ([f64; 3], [f64; 3]) {
-    let k = (0..3)
-        .min_by(|&i, &j| n[i].abs().total_cmp(&n[j].abs()))
-        .unwrap_or(0);
-    let mut e = [0.0; 3];
-    e[k] = 1.0;
-    let unit = |x: [f64; 3]| {
-        let l = dot(&x, &x).sqrt();
-        x.map(|c| c / l)
-    };
-    let e1 = unit(cross(n, &e));
-    let e2 = unit(cross(n, &e1));
-    (e1, e2)
 }
 
 /// The parameter rectangle of `origin + s·u + t·v` holding the projection (along
@@ -267,6 +287,7 @@ fn singular(p: &CertifiedSingularPoint, params: [bool; 2]) -> SingularPointAnswe
             param_box: Some(param_box),
             multiplicity: 2,
             tangent: true,
+            region: Some(bounds(&p.region_xyz)),
             ..Point::default()
         },
         status: p.status,

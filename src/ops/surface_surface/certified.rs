@@ -8,6 +8,7 @@ use super::chain::{distance_bound, Anchor, ChainContext, Piece};
 use super::complete::{
     critical_roots, domain_face_roots, hole_face_roots, RootBox, RootKind, Solved, DIRECTIONS,
 };
+use super::contact::locate_contact;
 use super::corrector::fixed_parameter_newton;
 use super::float::{settle, trace_all, trace_branch};
 use super::operand::Pair;
@@ -15,7 +16,7 @@ use super::singular::{certify_singular, singular_region, SingularBox, REGION_SIZ
 use super::trace::Tracer;
 use super::types::{
     CertifiedCurve, CertifiedSingularPoint, ChainBox, CurveEnd, CurvePoint, IntersectionCurve,
-    SurfaceIntersection, VertexBound,
+    SingularKind, SurfaceIntersection, VertexBound,
 };
 use crate::certificate::{Arithmetic, Certified, Status};
 use crate::error::GeomError;
@@ -115,6 +116,7 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
             let solved = critical_roots(&self.ctx, d, &opts)?;
             self.critical = Some(solved);
             if i == 0 {
+                self.contacts_at_clusters();
                 self.certify_new_singular();
             } else {
                 self.regrow_all();
@@ -153,6 +155,23 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
             .chain(c.undecided.iter().map(|(b, _)| *b))
             .filter(|b| b.iter().all(|x| x.width() <= limit))
             .collect()
+    }
+
+    /// A contact located from each cluster of the critical system outside every
+    /// region: near a tangency the float search can miss (a plane touching a torus off
+    /// its seam, or an implicit plane whose enclosure holds tangent and cutting planes
+    /// alike, `Plane::through_box`), and such a cluster is then left undecided, though
+    /// a singular region would hold it.
+    fn contacts_at_clusters(&mut self) {
+        for c in self.clusters() {
+            if self.in_region(&c) {
+                continue;
+            }
+            let x = self.ctx.pair.wrap(std::array::from_fn(|k| c[k].midpoint()));
+            if let Some(p) = locate_contact(self.ctx.pair, x, 0.5, SingularKind::Contact) {
+                self.tracer.add_singular(p);
+            }
+        }
     }
 
     /// `v` grown to hold every cluster box that meets it.
@@ -454,7 +473,18 @@ impl<'p, 'a, R: Surface, S: Surface> State<'p, 'a, R, S> {
                     .iter()
                     .any(|(_, pieces)| self.in_pieces(&r.params, pieces, false))
                     || self.near_traced(&r.estimate);
-                if traced || r.status == Status::VerifiedSingular {
+                if traced {
+                    continue;
+                }
+                if r.status == Status::VerifiedSingular {
+                    // A tangential root no trace explains: a contact the float search
+                    // missed (a plane touching a torus off its seam). Located from the
+                    // root, it gets a singular region like every other contact.
+                    let x = self.ctx.pair.wrap(r.estimate);
+                    if let Some(c) = locate_contact(self.ctx.pair, x, 0.5, SingularKind::Contact) {
+                        self.tracer.add_singular(c);
+                        self.certify_new_singular();
+                    }
                     continue;
                 }
                 let Ok(x) = settle(self.ctx.pair, self.ctx.pair.wrap(r.estimate)) else {
