@@ -209,7 +209,7 @@ fn env_number(name: &str, default: u64) -> u64 {
 #[test]
 fn mutated_corpus_inputs_pass() {
     let seconds = env_number("GEOCERT_FUZZ_SECONDS", 60);
-    let seed = env_number("GEOCERT_FUZZ_SEED", 0x6765_6f63_6572_74);
+    let seed = env_number("GEOCERT_FUZZ_SEED", 0x0067_656f_6365_7274);
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("fuzz/corpus");
     let corpora: Vec<(&str, targets::Target, Vec<Vec<u8>>)> = targets::TARGETS
         .iter()
