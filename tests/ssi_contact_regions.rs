@@ -16,7 +16,7 @@
 //! (`hR cos θ + r√(h² cos² θ + c²) = e′`, by bisection) and its two points on the
 //! meridian through the contact.
 
-use geocert::io::{read_cases, solve_case};
+use geocert::io::{read_cases, solve_case, verify_case};
 use rug::float::Constant;
 use rug::Float;
 use serde_json::{json, Value};
@@ -260,4 +260,20 @@ fn the_exact_intersection_near_a_torus_contact_lies_in_its_region() {
         checked >= 50 && loops >= 15 && at_contact >= 20,
         "{checked} {loops} {at_contact}"
     );
+}
+
+/// geocert's own answer with a contact (and its `region`) reads back as a claim: a
+/// `verify` of it is a verdict, not a format error.
+#[test]
+fn an_answer_with_a_region_verifies_as_a_claim() {
+    let case = json!({"op": "intersect", "objects": [
+        {"type": "torus", "center": [0, 0, 0], "major": 3, "minor": 1, "axis": [0, 0, 1]},
+        {"type": "plane", "normal": [3, 0, 4], "d": -14}]});
+    let answer = solve(&case);
+    assert!(answer["points"][0].get("region").is_some(), "{answer}");
+    let mut claimed = case.clone();
+    claimed["claim"] = answer.clone();
+    let read = read_cases(&claimed.to_string()).into_iter().next().unwrap();
+    let r: Value = serde_json::from_str(&verify_case(read).to_json_line()).unwrap();
+    assert_ne!(r["status"], "error", "{r}");
 }

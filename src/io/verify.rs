@@ -83,6 +83,8 @@ struct ClaimPoint {
     _signed_distance: serde::de::IgnoredAny,
     #[serde(default, rename = "nearest")]
     _nearest: serde::de::IgnoredAny,
+    #[serde(default, rename = "region")]
+    _region: serde::de::IgnoredAny,
 }
 
 #[derive(Debug, Deserialize)]
