@@ -146,6 +146,17 @@ impl GeomError {
         }
     }
 
+    /// Replace the leading path `from` of the field by `to` (an operation built on
+    /// another one names the caller's fields: `objects[1].range` → `direction.range`);
+    /// other fields are kept.
+    pub fn renamed(mut self, from: &str, to: &str) -> Self {
+        let field = self.field_mut();
+        if let Some(rest) = field.strip_prefix(from) {
+            *field = format!("{to}{rest}");
+        }
+        self
+    }
+
     /// Prefix the field path with the context the caller knows:
     /// `GeomError::ZeroDirection{field:"dir"}.at("objects[1]")` names `objects[1].dir`.
     pub fn at(mut self, prefix: &str) -> Self {

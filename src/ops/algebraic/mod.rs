@@ -29,6 +29,7 @@ pub(crate) mod curve_quadric;
 pub(crate) mod exact_line;
 mod exact_spline;
 mod foot2;
+mod foot3;
 pub(crate) mod implicit_quadric;
 mod kquad;
 mod line;
@@ -46,7 +47,8 @@ pub(crate) mod three_spheres;
 
 pub use crate::ops::rational::{Conic, QuadricForm};
 pub use conic_conic::{intersect_conic_conic, intersect_conic_conic_until, ConicCut, ConicHit};
-pub(crate) use foot2::project_point_conic2;
+pub(crate) use foot2::{every_point_a_foot, project_point_conic2};
+pub(crate) use foot3::project_point_conic3;
 pub use line::{LineCut, LineHit};
 pub use line_surface::{
     intersect_line_conic, intersect_line_quadric, intersect_line_quadric_exact,

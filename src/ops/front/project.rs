@@ -1,13 +1,18 @@
 //! `project`: the front door of every projection of a point (OPERATIONS.md §3).
 
+use super::intersect::intersect;
+use super::points::{distance, keep_nearest_hit};
 use super::project_curved;
 use crate::certificate::Certified;
+use crate::curve::any::AnyCurve3;
 use crate::error::GeomError;
-use crate::ops::algebraic::project_point_conic2;
+use crate::geom::Line;
+use crate::ops::algebraic::{project_point_conic2, project_point_conic3};
 use crate::ops::answer::Answer;
 use crate::ops::linear;
-use crate::ops::options::ProjectOptions;
-use crate::ops::shape::{Position, Shape};
+use crate::ops::options::{Options, ProjectOptions};
+use crate::ops::shape::{Linear, LinearObject, Position, Shape};
+use nalgebra::{Vector2, Vector3};
 
 /// The projections of `point` onto `onto`: every foot of a perpendicular (points where
 /// the distance is stationary, docs/FORMAT.md "Projections"), or with `nearest` the nearest
@@ -30,8 +35,26 @@ pub fn project(
             let p = point.doubles::<3>("point")?;
             project_curved::onto_surface(s, p, how.nearest, direction("direction")?, opts)
         }
+        Shape::Curve(_) if how.direction.is_some() => {
+            let p = point.doubles::<3>("point")?;
+            let d = direction("direction")?.unwrap_or_default();
+            along_curve(onto, &p, &d, how.nearest, opts)
+        }
+        Shape::Curve2(_) | Shape::Conic2(_) if how.direction.is_some() => {
+            let p = point.doubles::<2>("point")?;
+            let d = how
+                .direction
+                .as_ref()
+                .map_or(Ok([0.0; 2]), |d| d.doubles::<2>("direction"))?;
+            along_curve(onto, &p, &d, how.nearest, opts)
+        }
         Shape::Curve(c) => {
             let p = point.doubles::<3>("point")?;
+            if let AnyCurve3::Analytic(a) = c {
+                if let Some(r) = project_point_conic3(p, a, how.nearest, opts.deadline) {
+                    return Ok(r);
+                }
+            }
             project_curved::onto_curve(c, p, how.nearest, opts)
         }
         Shape::Curve2(c) => {
@@ -66,4 +89,73 @@ pub fn project(
                 .into(),
         }),
     }
+}
+
+/// Projection onto a curve along a direction (§3.5 as for surfaces): the hits of the ray
+/// `point + t·direction`, `t ≥ 0`, on the curve, by the intersect front door (exact for
+/// conics and lines, certified otherwise), each with its distance from `point`; with
+/// `nearest` the hit nearest to `point` when its ray parameter is proven smallest.
+/// Parameters: the curve's, then the ray's.
+fn along_curve(
+    onto: &Shape,
+    p: &[f64],
+    d: &[f64],
+    nearest: bool,
+    opts: &Options,
+) -> Result<Certified<Answer>, GeomError> {
+    if d.iter().all(|&x| x == 0.0) {
+        return Err(GeomError::ZeroDirection {
+            field: "direction".into(),
+        });
+    }
+    // A `conic2` (unbounded in general) meets the whole line exactly; the hits behind
+    // `point` are dropped below.
+    let whole = matches!(onto, Shape::Conic2(_));
+    let ray = if p.len() == 3 {
+        LinearObject::Line(Line::ray(
+            Vector3::from_column_slice(p),
+            Vector3::from_column_slice(d),
+        )?)
+    } else if whole {
+        let (o, v) = (Vector2::from_column_slice(p), Vector2::from_column_slice(d));
+        LinearObject::Line2(Line::with_param_range(o, v, None)?)
+    } else {
+        LinearObject::Line2(Line::ray(
+            Vector2::from_column_slice(p),
+            Vector2::from_column_slice(d),
+        )?)
+    };
+    let shapes = [onto.clone(), Shape::Linear(Linear::Double(ray))];
+    let mut r = intersect(&shapes, opts).map_err(|e| {
+        e.renamed("objects[0]", "onto")
+            .renamed("objects[1]", "direction")
+    })?;
+    if let Answer::Points(points) = &mut r.value {
+        if whole {
+            // The ray parameter's box: behind (`hi < 0`) dropped, ahead kept; one
+            // straddling 0 (not met by exact answers, whose parameter is correctly
+            // rounded) leaves the answer undecided.
+            let t = |q: &crate::ops::answer::Point| {
+                q.param_box
+                    .as_ref()
+                    .and_then(|b| b.get(1)?.first().copied())
+            };
+            if points
+                .iter()
+                .any(|q| t(q).is_none_or(|[lo, hi]| lo < 0.0 && hi >= 0.0))
+            {
+                r.status = r.status.weakest(crate::certificate::Status::Undecided);
+                r.complete = false;
+                r.reason = Some("a hit's ray parameter is not proven on either side of 0".into());
+            }
+            points.retain(|q| t(q).is_none_or(|[_, hi]| hi >= 0.0));
+        }
+        for q in points.iter_mut() {
+            q.distance = Some(distance(&q.xyz, p));
+        }
+    }
+    if nearest && matches!(&r.value, Answer::Points(v) if !v.is_empty()) {
+        keep_nearest_hit(&mut r, 1);
+    }
+    Ok(r)
 }

@@ -10,6 +10,7 @@ use crate::curve::any::AnyCurve3;
 use crate::curve::lines::Line;
 use crate::curve::Curve;
 use crate::error::GeomError;
+use crate::ops::algebraic::every_point_a_foot;
 use crate::ops::algebraic::pairs::{ray_surface, sphere_params};
 use crate::ops::algebraic::quadric_feet::project_point_quadric;
 use crate::ops::answer::{Answer, Point};
@@ -117,6 +118,12 @@ fn onto_sphere(s: &AnySurface, p: &[f64; 3], nearest: bool) -> Option<Certified<
     let AnySurface::Sphere(sphere) = s else {
         return None;
     };
+    let centre = sphere.frame().origin();
+    if *p == centre {
+        // Every point of the sphere (or of its part) is at the distance r.
+        let r2 = rug::Rational::from_f64(sphere.radius())?.square();
+        return Some(every_point_a_foot("sphere", &r2));
+    }
     if !is_closed_shell(s) {
         return None;
     }
