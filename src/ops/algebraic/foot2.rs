@@ -130,7 +130,7 @@ pub(super) fn fallback_distance(h: &ConicHit, chart: &Chart) -> f64 {
 /// The index of the foot strictly nearest to the chart's point, proven by enclosures of
 /// the squared distances; `None` while two of them cannot be separated within the
 /// precision cap.
-pub(super) fn nearest_index(hits: &[ConicHit], chart: &Chart) -> Option<usize> {
+fn nearest_index(hits: &[ConicHit], chart: &Chart) -> Option<usize> {
     let mut feet: Vec<Foot> = hits.iter().map(Foot::of).collect();
     let mut bits = 64;
     while bits <= PRECISION_CAP {
@@ -198,11 +198,7 @@ pub(crate) fn project_point_conic2(
     let ConicCut::Points(hits) = &cut.value else {
         return None;
     };
-    let chosen: Vec<usize> = if nearest && !hits.is_empty() {
-        vec![nearest_index(hits, &chart)?]
-    } else {
-        (0..hits.len()).collect()
-    };
+    let chosen = chosen(hits, &chart, nearest)?;
     let mut all_rounded = true;
     let points: Vec<Point> = chosen
         .into_iter()
@@ -225,8 +221,27 @@ pub(crate) fn project_point_conic2(
             }
         })
         .collect();
-    // In the order of the curve's parameter, as the numeric path reports feet.
-    let mut points = points;
+    Some(feet_answer(&cut, points, all_rounded))
+}
+
+/// The indices of the feet to report: all, or with `nearest` the proven nearest one
+/// (`None` while a tie is unresolved).
+pub(super) fn chosen(hits: &[ConicHit], chart: &Chart, nearest: bool) -> Option<Vec<usize>> {
+    Some(if nearest && !hits.is_empty() {
+        vec![nearest_index(hits, chart)?]
+    } else {
+        (0..hits.len()).collect()
+    })
+}
+
+/// The answer of the feet `points` under the certificate of the conic ∩ conic cut, in
+/// the order of the curve's parameter (as the numeric path reports feet), lowered to
+/// `verified` when a number could not be correctly rounded.
+pub(super) fn feet_answer(
+    cut: &Certified<ConicCut>,
+    mut points: Vec<Point>,
+    all_rounded: bool,
+) -> Certified<Answer> {
     points.sort_by(|a, b| {
         a.params[0]
             .partial_cmp(&b.params[0])
@@ -236,7 +251,7 @@ pub(crate) fn project_point_conic2(
     if !all_rounded {
         not_correctly_rounded(&mut r);
     }
-    Some(r)
+    r
 }
 
 /// Every point of a circle is a foot of its centre (`G ≡ 0`): the squared distance is

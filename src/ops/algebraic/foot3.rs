@@ -27,8 +27,9 @@ use rug::Rational;
 use std::cmp::Ordering;
 
 use super::conic_plane::{exact_frame, ExactFrame};
-use super::foot2::{distance, every_point_a_foot, fallback_distance, feet, nearest_index, Chart};
-use super::pairs::not_correctly_rounded;
+use super::foot2::{
+    chosen, distance, every_point_a_foot, fallback_distance, feet, feet_answer, Chart,
+};
 use super::{ConicCut, ConicHit, QuadricForm};
 use crate::certificate::Certified;
 use crate::certify::univariate::RealRoot;
@@ -182,13 +183,9 @@ pub(crate) fn project_point_conic3(
     let ConicCut::Points(hits) = &cut.value else {
         return None;
     };
-    let chosen: Vec<usize> = if nearest && !hits.is_empty() {
-        vec![nearest_index(hits, &sc.chart)?]
-    } else {
-        (0..hits.len()).collect()
-    };
+    let chosen = chosen(hits, &sc.chart, nearest)?;
     let mut all_rounded = true;
-    let mut points: Vec<Point> = chosen
+    let points: Vec<Point> = chosen
         .into_iter()
         .map(|i| {
             let h = &hits[i];
@@ -210,15 +207,5 @@ pub(crate) fn project_point_conic3(
             }
         })
         .collect();
-    // In the order of the curve's parameter, as the numeric path reports feet.
-    points.sort_by(|a, b| {
-        a.params[0]
-            .partial_cmp(&b.params[0])
-            .unwrap_or(Ordering::Equal)
-    });
-    let mut r = cut.clone_with(Answer::from_points(points));
-    if !all_rounded {
-        not_correctly_rounded(&mut r);
-    }
-    Some(r)
+    Some(feet_answer(&cut, points, all_rounded))
 }
