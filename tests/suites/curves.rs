@@ -60,6 +60,8 @@ mod project_conic_exact;
 mod project_curve;
 #[path = "../rational_conics.rs"]
 mod rational_conics;
+#[path = "../rays_carrier.rs"]
+mod rays_carrier;
 #[path = "../space_conic_feet.rs"]
 mod space_conic_feet;
 #[path = "../space_conics_exact.rs"]

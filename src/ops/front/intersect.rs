@@ -45,6 +45,23 @@ pub fn intersect(shapes: &[Shape], opts: &Options) -> Result<Certified<Answer>, 
         return linear::intersect(&linear, opts);
     }
     if let [a, b] = shapes {
+        // A ray against an unbounded conic or quadric: the carrier, kept on the ray.
+        for at in 0..2 {
+            let (ray, other) = if at == 0 { (a, b) } else { (b, a) };
+            let Some((line, range)) = super::rays::carrier(ray, other) else {
+                continue;
+            };
+            let pair = if at == 0 {
+                (&line, other)
+            } else {
+                (other, &line)
+            };
+            if let Some(Ok(r)) = algebraic(pair.0, pair.1, opts.deadline) {
+                if let Some(r) = super::rays::keep_on_ray(r, at, &range) {
+                    return Ok(r);
+                }
+            }
+        }
         // A ray against a bounded shape is its piece up to that shape's box (`rays`).
         let cut = [super::rays::cut(a, b), super::rays::cut(b, a)];
         let (ca, cb) = (cut[0].as_ref().unwrap_or(a), cut[1].as_ref().unwrap_or(b));

@@ -94,7 +94,8 @@ pub fn project(
 /// Projection onto a curve along a direction (§3.5 as for surfaces): the hits of the ray
 /// `point + t·direction`, `t ≥ 0`, on the curve, by the intersect front door (exact for
 /// conics and lines, certified otherwise), each with its distance from `point`; with
-/// `nearest` the hit nearest to `point` when its ray parameter is proven smallest.
+/// `nearest` the hit nearest to `point` when its ray parameter is proven smallest
+/// (a `conic2` is met by the ray's carrier, kept on the ray: `rays::keep_on_ray`).
 /// Parameters: the curve's, then the ray's.
 fn along_curve(
     onto: &Shape,
@@ -108,17 +109,11 @@ fn along_curve(
             field: "direction".into(),
         });
     }
-    // A `conic2` (unbounded in general) meets the whole line exactly; the hits behind
-    // `point` are dropped below.
-    let whole = matches!(onto, Shape::Conic2(_));
     let ray = if p.len() == 3 {
         LinearObject::Line(Line::ray(
             Vector3::from_column_slice(p),
             Vector3::from_column_slice(d),
         )?)
-    } else if whole {
-        let (o, v) = (Vector2::from_column_slice(p), Vector2::from_column_slice(d));
-        LinearObject::Line2(Line::with_param_range(o, v, None)?)
     } else {
         LinearObject::Line2(Line::ray(
             Vector2::from_column_slice(p),
@@ -131,25 +126,6 @@ fn along_curve(
             .renamed("objects[1]", "direction")
     })?;
     if let Answer::Points(points) = &mut r.value {
-        if whole {
-            // The ray parameter's box: behind (`hi < 0`) dropped, ahead kept; one
-            // straddling 0 (not met by exact answers, whose parameter is correctly
-            // rounded) leaves the answer undecided.
-            let t = |q: &crate::ops::answer::Point| {
-                q.param_box
-                    .as_ref()
-                    .and_then(|b| b.get(1)?.first().copied())
-            };
-            if points
-                .iter()
-                .any(|q| t(q).is_none_or(|[lo, hi]| lo < 0.0 && hi >= 0.0))
-            {
-                r.status = r.status.weakest(crate::certificate::Status::Undecided);
-                r.complete = false;
-                r.reason = Some("a hit's ray parameter is not proven on either side of 0".into());
-            }
-            points.retain(|q| t(q).is_none_or(|[_, hi]| hi >= 0.0));
-        }
         for q in points.iter_mut() {
             q.distance = Some(distance(&q.xyz, p));
         }
