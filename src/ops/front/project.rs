@@ -104,11 +104,7 @@ fn along_curve(
     nearest: bool,
     opts: &Options,
 ) -> Result<Certified<Answer>, GeomError> {
-    if d.iter().all(|&x| x == 0.0) {
-        return Err(GeomError::ZeroDirection {
-            field: "direction".into(),
-        });
-    }
+    project_curved::nonzero_direction(d)?;
     let ray = if p.len() == 3 {
         LinearObject::Line(Line::ray(
             Vector3::from_column_slice(p),

@@ -63,6 +63,16 @@ pub(crate) fn onto_curve<C: Curve<D>, const D: usize>(
     Ok(with_nearest(feet, &[1], &p, n))
 }
 
+/// The projection's `direction` is not the zero vector (`zero_direction` on it).
+pub(super) fn nonzero_direction(d: &[f64]) -> Result<(), GeomError> {
+    if d.iter().all(|&x| x == 0.0) {
+        return Err(GeomError::ZeroDirection {
+            field: "direction".into(),
+        });
+    }
+    Ok(())
+}
+
 /// Projection along a direction (§3.5): the ray's parameters that can meet the surface
 /// at all (a certified box of the whole surface), so that `complete` covers every hit.
 fn along(
@@ -72,11 +82,7 @@ fn along(
     nearest: bool,
     opts: &Options,
 ) -> Result<Certified<Answer>, GeomError> {
-    if d.iter().all(|&x| x == 0.0) {
-        return Err(GeomError::ZeroDirection {
-            field: "direction".into(),
-        });
-    }
+    nonzero_direction(&d)?;
     if let Some(mut r) = ray_surface(p, d, s) {
         // Decided exactly through the implicit form (poles and apexes included).
         if let Answer::Points(points) = &mut r.value {
